@@ -1,0 +1,19 @@
+//! The driveline model: its data ([`types`]), reading and writing model files
+//! ([`read`], [`write`]), validation with errors that name file, line and key
+//! ([`validate`], [`error`]), the gear tree ([`graph`]), the rubber coupling law of
+//! seed 000 ([`rubber`]) and the presets shipped in the binary ([`presets`]).
+
+pub mod error;
+pub mod graph;
+pub mod presets;
+pub mod read;
+pub mod rubber;
+pub mod types;
+pub mod validate;
+pub mod write;
+
+pub use error::ModelError;
+pub use read::{parse_model, read_model_file};
+pub use types::*;
+pub use validate::validate;
+pub use write::{save_model_file, to_toml_string};

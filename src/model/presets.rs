@@ -1,0 +1,1 @@
+//! Presets shipped inside the binary (stub).

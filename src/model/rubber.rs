@@ -1,0 +1,228 @@
+//! The rubber coupling law of seed 000: static stiffness from elements (eq. 12), the
+//! amplitude, frequency and temperature corrections (eq. 1–2, 8–11), the dynamic stiffness
+//! (eq. 13) and the relative damping (eq. 14–15).
+
+use super::types::{Poly, RubberStage, RubberStiffness};
+
+/// Which correction factor a warning is about.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Factor {
+    /// α_x (amplitude, seed 000 eq. 1).
+    Amplitude,
+    /// α_f (frequency, eq. 9).
+    Frequency,
+    /// α_Tc (temperature, stiffness, eq. 10).
+    TemperatureStiffness,
+    /// α_Tξ (temperature, damping, eq. 11).
+    TemperatureDamping,
+}
+
+impl Factor {
+    /// The model-file key of the polynomial.
+    pub fn key(self) -> &'static str {
+        match self {
+            Factor::Amplitude => "amplitude_poly",
+            Factor::Frequency => "frequency_poly",
+            Factor::TemperatureStiffness => "temperature_stiffness_poly",
+            Factor::TemperatureDamping => "temperature_damping_poly",
+        }
+    }
+}
+
+/// A polynomial evaluated outside its measured range (the end value was used).
+#[derive(Debug, Clone, PartialEq)]
+pub struct RangeWarning {
+    /// Which polynomial.
+    pub factor: Factor,
+    /// The argument asked for (mm, Hz or °C).
+    pub argument: f64,
+    /// The measured range.
+    pub range: [f64; 2],
+}
+
+impl Poly {
+    /// Value at `x` (`a2·x² + a1·x + a0`), with `x` held inside `range` when one is given.
+    pub fn eval(&self, x: f64) -> f64 {
+        let x = self.clamp(x);
+        let [a2, a1, a0] = self.coeffs;
+        (a2 * x + a1) * x + a0
+    }
+
+    /// Derivative at `x`; zero outside the range (the factor is held there).
+    pub fn derivative(&self, x: f64) -> f64 {
+        if self.clamp(x) != x {
+            return 0.0;
+        }
+        let [a2, a1, _] = self.coeffs;
+        2.0 * a2 * x + a1
+    }
+
+    /// `x` held inside the measured range.
+    pub fn clamp(&self, x: f64) -> f64 {
+        match self.range {
+            Some([lo, hi]) => x.clamp(lo, hi),
+            None => x,
+        }
+    }
+
+    /// True when `x` lies outside the measured range.
+    pub fn is_outside(&self, x: f64) -> bool {
+        self.range.is_some_and(|[lo, hi]| x < lo || x > hi)
+    }
+}
+
+/// Everything the seed 000 law gives for one stage at one operating point.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RubberState {
+    /// Static torsional stiffness at 25 °C, N·m/rad (eq. 12 or as given).
+    pub static_stiffness_nm_per_rad: f64,
+    /// α_x at the twist: secant ratio (eq. 1–2).
+    pub alpha_x: f64,
+    /// d(α_x·x)/dx at the twist: tangent ratio.
+    pub alpha_x_tangent: f64,
+    /// α_f at the frequency (eq. 9).
+    pub alpha_f: f64,
+    /// α_Tc at the temperature (eq. 10).
+    pub alpha_tc: f64,
+    /// α_Tξ at the temperature (eq. 11).
+    pub alpha_txi: f64,
+    /// Dynamic (secant) stiffness `c_Tstat·α_x·α_f·α_Tc`, N·m/rad (eq. 13).
+    pub stiffness_nm_per_rad: f64,
+    /// Tangent stiffness `c_Tstat·d(α_x x)/dx·α_f·α_Tc`, N·m/rad: what small vibration
+    /// about the twist sees.
+    pub tangent_stiffness_nm_per_rad: f64,
+    /// Loss factor `ξ_T = ψ/2π · α_Tξ` (eq. 15).
+    pub loss_factor: f64,
+    /// Relative damping at the temperature, `ψ_T = 2π·ξ_T`.
+    pub psi: f64,
+    /// Polynomials evaluated outside their measured range.
+    pub warnings: Vec<RangeWarning>,
+}
+
+/// Evaluates an optional correction polynomial (a missing one is the factor 1),
+/// recording a warning when the argument is outside its range.
+fn factor(poly: Option<&Poly>, which: Factor, x: f64, warnings: &mut Vec<RangeWarning>) -> f64 {
+    match poly {
+        None => 1.0,
+        Some(p) => {
+            if let (true, Some(range)) = (p.is_outside(x), p.range) {
+                warnings.push(RangeWarning {
+                    factor: which,
+                    argument: x,
+                    range,
+                });
+            }
+            p.eval(x)
+        }
+    }
+}
+
+impl RubberStage {
+    /// Static torsional stiffness at 25 °C, N·m/rad (given, or seed 000 eq. 12).
+    pub fn static_stiffness_nm_per_rad(&self) -> f64 {
+        match &self.stiffness {
+            RubberStiffness::Direct(k) => *k,
+            RubberStiffness::Elements(e) => e.torsional_stiffness_nm_per_rad(),
+        }
+    }
+
+    /// Pitch radius of the elements, m, when the stage is built from elements.
+    pub fn pitch_radius_m(&self) -> Option<f64> {
+        match &self.stiffness {
+            RubberStiffness::Elements(e) => Some(e.pitch_diameter_m / 2.0),
+            RubberStiffness::Direct(_) => None,
+        }
+    }
+
+    /// Radial deformation of an element in mm for a twist across the stage in rad:
+    /// `x = |Δθ| · D/2 · 1000`. Zero when the stage has no elements.
+    pub fn radial_deformation_mm(&self, twist_rad: f64) -> f64 {
+        self.pitch_radius_m()
+            .map_or(0.0, |r| twist_rad.abs() * r * 1000.0)
+    }
+
+    /// The law at vibration frequency `frequency_hz` (`None`: static, α_f = 1),
+    /// rubber temperature `temperature_c` and twist `twist_rad` across the stage.
+    pub fn state(&self, frequency_hz: Option<f64>, temperature_c: f64, twist_rad: f64) -> RubberState {
+        let mut warnings = Vec::new();
+        let x_mm = self.radial_deformation_mm(twist_rad);
+        let (alpha_x, alpha_x_tangent) = match (&self.amplitude_poly, self.pitch_radius_m()) {
+            (Some(p), Some(_)) => {
+                let secant = factor(Some(p), Factor::Amplitude, x_mm, &mut warnings);
+                // d(α_x(x)·x)/dx = α_x(x) + x·α_x'(x); held α_x outside the range.
+                (secant, secant + x_mm * p.derivative(x_mm))
+            }
+            _ => (1.0, 1.0),
+        };
+        let alpha_f = match frequency_hz {
+            Some(f) => factor(self.frequency_poly.as_ref(), Factor::Frequency, f, &mut warnings),
+            None => 1.0,
+        };
+        let alpha_tc = factor(
+            self.temperature_stiffness_poly.as_ref(),
+            Factor::TemperatureStiffness,
+            temperature_c,
+            &mut warnings,
+        );
+        let alpha_txi = factor(
+            self.temperature_damping_poly.as_ref(),
+            Factor::TemperatureDamping,
+            temperature_c,
+            &mut warnings,
+        );
+        let k0 = self.static_stiffness_nm_per_rad();
+        let loss_factor = self.psi / (2.0 * std::f64::consts::PI) * alpha_txi;
+        RubberState {
+            static_stiffness_nm_per_rad: k0,
+            alpha_x,
+            alpha_x_tangent,
+            alpha_f,
+            alpha_tc,
+            alpha_txi,
+            stiffness_nm_per_rad: k0 * alpha_x * alpha_f * alpha_tc,
+            tangent_stiffness_nm_per_rad: k0 * alpha_x_tangent * alpha_f * alpha_tc,
+            loss_factor,
+            psi: 2.0 * std::f64::consts::PI * loss_factor,
+            warnings,
+        }
+    }
+
+    /// Static twist in rad that a static torque `torque_nm` (in the stage's own shaft)
+    /// puts on the stage at `temperature_c`: solves `c_Tstat·α_Tc·α_x(x)·Δθ = T` (seed 000
+    /// eq. 2, 13 with α_f = 1), the sign of Δθ following the torque.
+    ///
+    /// `α_x(x)·x` must increase with x for a unique answer; where it stops increasing the
+    /// twist found is the smallest that carries the torque, or the end of a bracket of
+    /// 10 rad. Returns `None` when no twist up to 10 rad carries the torque.
+    pub fn static_twist_rad(&self, torque_nm: f64, temperature_c: f64) -> Option<f64> {
+        let k_lin = self.state(None, temperature_c, 0.0).stiffness_nm_per_rad;
+        if torque_nm == 0.0 {
+            return Some(0.0);
+        }
+        if self.amplitude_poly.is_none() || self.pitch_radius_m().is_none() {
+            return Some(torque_nm / k_lin);
+        }
+        let target = torque_nm.abs();
+        let carried = |twist: f64| self.state(None, temperature_c, twist).stiffness_nm_per_rad * twist;
+        // Bracket: grow the upper end until it carries the torque.
+        let mut lo = 0.0;
+        let mut hi = (target / k_lin).min(10.0);
+        while carried(hi) < target {
+            lo = hi;
+            hi *= 2.0;
+            if hi > 10.0 {
+                return None;
+            }
+        }
+        // Bisection: 60 halvings reach f64 resolution of the bracket.
+        for _ in 0..60 {
+            let mid = 0.5 * (lo + hi);
+            if carried(mid) < target {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        Some(0.5 * (lo + hi) * torque_nm.signum())
+    }
+}
