@@ -14,3 +14,6 @@
 #![warn(missing_docs)]
 
 pub mod model;
+pub mod modal;
+pub mod physics;
+pub mod response;

@@ -1,0 +1,63 @@
+//! Assembly helpers for the lumped matrices.
+
+use nalgebra::{DMatrix, Scalar};
+use num_complex::Complex64;
+use std::ops::{AddAssign, SubAssign};
+
+/// Adds a spring of stiffness `k` between DOFs `a` and `b` (`None`: ground).
+pub fn add_spring<T>(matrix: &mut DMatrix<T>, a: Option<usize>, b: Option<usize>, k: T)
+where
+    T: Scalar + Copy + AddAssign + SubAssign,
+{
+    if let Some(a) = a {
+        matrix[(a, a)] += k;
+    }
+    if let Some(b) = b {
+        matrix[(b, b)] += k;
+    }
+    if let (Some(a), Some(b)) = (a, b) {
+        matrix[(a, b)] -= k;
+        matrix[(b, a)] -= k;
+    }
+}
+
+/// Real stiffness matrix at vibration frequency `frequency_hz` (rubber at α_f(f)).
+pub fn stiffness_matrix(system: &super::System, frequency_hz: f64) -> DMatrix<f64> {
+    let n = system.dof_count();
+    let mut k = DMatrix::<f64>::zeros(n, n);
+    for e in &system.elements {
+        add_spring(&mut k, e.from_dof, e.to_dof, e.stiffness_at(frequency_hz).0);
+    }
+    k
+}
+
+/// Viscous damping matrix: absolute damping, shafts; rubber (hysteretic) not included.
+pub fn damping_matrix(system: &super::System) -> DMatrix<f64> {
+    let mut c = DMatrix::<f64>::from_diagonal(&nalgebra::DVector::from_column_slice(
+        &system.absolute_damping_nm_s_per_rad,
+    ));
+    for e in &system.elements {
+        add_spring(&mut c, e.from_dof, e.to_dof, e.viscous_damping());
+    }
+    c
+}
+
+/// Dynamic stiffness `K(f)(1 + iξ) − ω²M + iωC` at angular frequency `omega_rad_s`,
+/// written into `out` (n×n).
+pub fn dynamic_stiffness(system: &super::System, omega_rad_s: f64, out: &mut DMatrix<Complex64>) {
+    out.fill(Complex64::new(0.0, 0.0));
+    let frequency_hz = omega_rad_s / std::f64::consts::TAU;
+    for (i, (&j, &c)) in system
+        .inertia_kg_m2
+        .iter()
+        .zip(&system.absolute_damping_nm_s_per_rad)
+        .enumerate()
+    {
+        out[(i, i)] += Complex64::new(-omega_rad_s * omega_rad_s * j, omega_rad_s * c);
+    }
+    for e in &system.elements {
+        let (k, loss) = e.stiffness_at(frequency_hz);
+        let z = Complex64::new(k, k * loss + omega_rad_s * e.viscous_damping());
+        add_spring(out, e.from_dof, e.to_dof, z);
+    }
+}

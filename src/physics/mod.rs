@@ -1,0 +1,15 @@
+//! The linear driveline at an operating point: assembly of M, K(f) (complex, hysteretic
+//! rubber), C, referred to the engine shaft through the gear tree ([`system`]); the static
+//! twist of the rubber stages under the mean torque ([`static_twist`]); the engine torque
+//! of seed 001 eq. 3–5 and its harmonics per order ([`engine`], [`excitation`]).
+
+pub mod engine;
+pub mod error;
+pub mod excitation;
+pub mod matrices;
+pub mod static_twist;
+pub mod system;
+
+pub use error::PhysicsError;
+pub use excitation::Excitation;
+pub use system::{Element, ElementLaw, OperatingPoint, System};

@@ -1,0 +1,392 @@
+//! The linear system at an operating point: degrees of freedom, inertias and elements
+//! referred to the engine (reference) shaft through the gear tree.
+//!
+//! Referral (`spec/model-format.md`, gears): a node turning at `r` times the reference
+//! speed has its inertia, stiffness and damping multiplied by `r²` and its torques by `r`;
+//! its own-shaft angle is `r` times the referred one. A rigid gear makes its two nodes one
+//! degree of freedom; a gear with mesh stiffness `k_m` (given at the `to` side) is a spring
+//! `k_m·r_to²` between them.
+
+use super::error::PhysicsError;
+use super::static_twist::static_connection_torques;
+use crate::model::{ConnectionKind, GROUND, Model, Poly, RubberStage, graph};
+
+/// Where the linear analyses are evaluated.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct OperatingPoint {
+    /// Engine load 0..1: picks the pressure curve (`pressure_by_load`) and so the mean
+    /// torque that twists the rubber stages. Default 1.
+    pub load: f64,
+    /// Rubber temperature for every stage, °C; `None`: each stage's `temperature_c`.
+    pub temperature_c: Option<f64>,
+}
+
+impl Default for OperatingPoint {
+    fn default() -> Self {
+        Self {
+            load: 1.0,
+            temperature_c: None,
+        }
+    }
+}
+
+/// How an element's stiffness behaves.
+#[derive(Debug, Clone, PartialEq)]
+pub enum ElementLaw {
+    /// A shaft or a gear mesh: constant stiffness and viscous damping (referred).
+    Linear {
+        /// Referred stiffness, N·m/rad.
+        stiffness_nm_per_rad: f64,
+        /// Referred viscous damping, N·m·s/rad.
+        damping_nm_s_per_rad: f64,
+    },
+    /// A rubber stage linearized at its static twist: `k(f) = k_base·α_f(f)`, hysteretic
+    /// with loss factor `ξ_T` (seed 000 eq. 13, 15).
+    Rubber {
+        /// Referred tangent stiffness without α_f, N·m/rad: `c_Tstat·dα_x x/dx·α_Tc·r²`.
+        base_stiffness_nm_per_rad: f64,
+        /// α_f(f) (seed 000 eq. 9); `None`: no frequency dependence.
+        frequency_poly: Option<Poly>,
+        /// Loss factor `ξ_T = ψ/2π·α_Tξ`.
+        loss_factor: f64,
+    },
+}
+
+/// A spring (and damper) between two degrees of freedom, or one and the frame.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Element {
+    /// Index of the model connection.
+    pub connection: usize,
+    /// DOF at the `from` end (`None`: ground).
+    pub from_dof: Option<usize>,
+    /// DOF at the `to` end (`None`: ground).
+    pub to_dof: Option<usize>,
+    /// |Speed ratio| of the shaft the connection's torque is given in (its own shaft;
+    /// the `to` side for gears). Own-shaft torque = referred torque / this.
+    pub torque_ratio: f64,
+    /// Stiffness law.
+    pub law: ElementLaw,
+}
+
+impl Element {
+    /// Referred stiffness at vibration frequency `frequency_hz`, N·m/rad, and the loss
+    /// factor (zero for linear elements).
+    pub fn stiffness_at(&self, frequency_hz: f64) -> (f64, f64) {
+        match &self.law {
+            ElementLaw::Linear {
+                stiffness_nm_per_rad,
+                ..
+            } => (*stiffness_nm_per_rad, 0.0),
+            ElementLaw::Rubber {
+                base_stiffness_nm_per_rad,
+                frequency_poly,
+                loss_factor,
+            } => {
+                let alpha_f = frequency_poly.as_ref().map_or(1.0, |p| p.eval(frequency_hz));
+                (base_stiffness_nm_per_rad * alpha_f, *loss_factor)
+            }
+        }
+    }
+
+    /// Referred viscous damping, N·m·s/rad (zero for rubber: it is hysteretic).
+    pub fn viscous_damping(&self) -> f64 {
+        match &self.law {
+            ElementLaw::Linear {
+                damping_nm_s_per_rad,
+                ..
+            } => *damping_nm_s_per_rad,
+            ElementLaw::Rubber { .. } => 0.0,
+        }
+    }
+
+    /// True when the stiffness depends on frequency.
+    pub fn is_frequency_dependent(&self) -> bool {
+        matches!(
+            &self.law,
+            ElementLaw::Rubber {
+                frequency_poly: Some(_),
+                ..
+            }
+        )
+    }
+}
+
+/// The linear driveline at an operating point, referred to the reference shaft.
+#[derive(Debug, Clone, PartialEq)]
+pub struct System {
+    /// Node names, in model order.
+    pub node_names: Vec<String>,
+    /// Mean speed of each node over the reference node's (signed).
+    pub speed_ratio: Vec<f64>,
+    /// DOF of each node (rigid gears put several nodes on one DOF).
+    pub dof_of_node: Vec<usize>,
+    /// Referred inertia of each DOF including the engine's cycle-mean reciprocating
+    /// inertia, kg·m².
+    pub inertia_kg_m2: Vec<f64>,
+    /// Referred absolute damping of each DOF (node damping and load damping), N·m·s/rad.
+    pub absolute_damping_nm_s_per_rad: Vec<f64>,
+    /// The springs.
+    pub elements: Vec<Element>,
+    /// Connection names, in model order.
+    pub connection_names: Vec<String>,
+    /// Mean (static) torque through each connection in its own shaft, N·m; `None` for a
+    /// rigid gear (no element carries it).
+    pub mean_torque_nm: Vec<Option<f64>>,
+    /// Static twist of each connection in its own shaft, rad (`None` for rigid gears).
+    pub static_twist_rad: Vec<Option<f64>>,
+    /// The reference node (engine speed).
+    pub reference_node: usize,
+    /// Number of rigid-body modes (free components of the DOF graph).
+    pub rigid_body_modes: usize,
+    /// Warnings raised while building (polynomials outside their range), for a person.
+    pub warnings: Vec<String>,
+}
+
+impl System {
+    /// Number of degrees of freedom.
+    pub fn dof_count(&self) -> usize {
+        self.inertia_kg_m2.len()
+    }
+
+    /// True when some rubber stiffness depends on frequency.
+    pub fn is_frequency_dependent(&self) -> bool {
+        self.elements.iter().any(Element::is_frequency_dependent)
+    }
+
+    /// Checks that every rubber stage's α_f is positive at `frequency_hz` (seed 000 eq. 9
+    /// turns negative above ~720 Hz unless a `frequency_poly_range` holds it).
+    pub fn check_frequency(&self, frequency_hz: f64) -> Result<(), PhysicsError> {
+        for e in &self.elements {
+            if let ElementLaw::Rubber {
+                frequency_poly: Some(p),
+                ..
+            } = &e.law
+            {
+                let value = p.eval(frequency_hz);
+                if value.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
+                    return Err(PhysicsError::FrequencyFactor {
+                        connection: self.connection_names[e.connection].clone(),
+                        frequency_hz,
+                        value,
+                    });
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// Builds the system of a validated model at an operating point.
+    pub fn new(model: &Model, point: OperatingPoint) -> Result<Self, PhysicsError> {
+        crate::model::validate(model)?;
+        let ratios = graph::speed_ratios(model)?;
+        let reference_node = graph::reference_node(model).ok_or(PhysicsError::Empty)?;
+        let dof_of_node = merge_rigid_gears(model);
+        let n_dof = dof_of_node.iter().max().map_or(0, |m| m + 1);
+
+        let mut inertia = vec![0.0; n_dof];
+        let mut damping = vec![0.0; n_dof];
+        for (i, node) in model.inertias.iter().enumerate() {
+            let r2 = ratios[i] * ratios[i];
+            inertia[dof_of_node[i]] += node.inertia_kg_m2 * r2;
+            damping[dof_of_node[i]] += node.damping_nm_s_per_rad * r2;
+        }
+        if let Some(engine) = &model.engine {
+            for cylinder in 0..engine.cylinders as usize {
+                if let Some(node) = model.node_index(engine.node_of_cylinder(cylinder)) {
+                    let r2 = ratios[node] * ratios[node];
+                    inertia[dof_of_node[node]] +=
+                        super::engine::mean_reciprocating_inertia_kg_m2(engine) * r2;
+                }
+            }
+        }
+        if let (Some(load), Some(name)) = (&model.load, model.load_node())
+            && let Some(node) = model.node_index(name)
+        {
+            damping[dof_of_node[node]] += load.damping_nm_s_per_rad * ratios[node] * ratios[node];
+        }
+
+        let dof = |name: &str| (name != GROUND).then(|| model.node_index(name).map(|i| dof_of_node[i])).flatten();
+        let ratio_of = |name: &str| model.node_index(name).map_or(1.0, |i| ratios[i].abs());
+        let shaft_ratio = |c: &crate::model::Connection| {
+            if c.from == GROUND { ratio_of(&c.to) } else { ratio_of(&c.from) }
+        };
+
+        // Linear elements first (rubber at its linear static stiffness) for the static solve.
+        let mut elements = Vec::new();
+        for (j, c) in model.connections.iter().enumerate() {
+            let (from_dof, to_dof) = (dof(&c.from), dof(&c.to));
+            let (torque_ratio, law) = match &c.kind {
+                ConnectionKind::Shaft(s) => {
+                    let r = shaft_ratio(c);
+                    (r, ElementLaw::Linear {
+                        stiffness_nm_per_rad: s.stiffness_nm_per_rad * r * r,
+                        damping_nm_s_per_rad: s.damping_nm_s_per_rad * r * r,
+                    })
+                }
+                ConnectionKind::Rubber(stage) => {
+                    let r = shaft_ratio(c);
+                    let temperature = point.temperature_c.unwrap_or(stage.temperature_c);
+                    let state = stage.state(None, temperature, 0.0);
+                    (r, ElementLaw::Linear {
+                        stiffness_nm_per_rad: state.stiffness_nm_per_rad * r * r,
+                        damping_nm_s_per_rad: 0.0,
+                    })
+                }
+                ConnectionKind::Gear(g) => match g.mesh_stiffness_nm_per_rad {
+                    None => continue,
+                    Some(k) => {
+                        let r = ratio_of(&c.to);
+                        (r, ElementLaw::Linear {
+                            stiffness_nm_per_rad: k * r * r,
+                            damping_nm_s_per_rad: 0.0,
+                        })
+                    }
+                },
+            };
+            elements.push(Element { connection: j, from_dof, to_dof, torque_ratio, law });
+        }
+
+        let rigid_body_modes = free_components(n_dof, &elements);
+        let mut system = System {
+            node_names: model.inertias.iter().map(|n| n.name.clone()).collect(),
+            speed_ratio: ratios,
+            dof_of_node,
+            inertia_kg_m2: inertia,
+            absolute_damping_nm_s_per_rad: damping,
+            elements,
+            connection_names: model.connections.iter().map(|c| c.name.clone()).collect(),
+            mean_torque_nm: vec![None; model.connections.len()],
+            static_twist_rad: vec![None; model.connections.len()],
+            reference_node,
+            rigid_body_modes,
+            warnings: Vec::new(),
+        };
+
+        let mean_torques = static_connection_torques(model, &system, point.load)?;
+        for (e, torque) in system.elements.iter().zip(&mean_torques) {
+            system.mean_torque_nm[e.connection] = Some(*torque);
+        }
+        // Rubber stages: tangent stiffness at the static twist (seed 000 eq. 1–2, 13).
+        for e in &mut system.elements {
+            let c = &model.connections[e.connection];
+            let torque = system.mean_torque_nm[e.connection].unwrap_or(0.0);
+            let r2 = e.torque_ratio * e.torque_ratio;
+            match &c.kind {
+                ConnectionKind::Rubber(stage) => {
+                    let temperature = point.temperature_c.unwrap_or(stage.temperature_c);
+                    let (law, twist) = rubber_law(stage, &c.name, torque, temperature, r2, &mut system.warnings)?;
+                    e.law = law;
+                    system.static_twist_rad[e.connection] = Some(twist);
+                }
+                _ => {
+                    let (k, _) = e.stiffness_at(0.0);
+                    system.static_twist_rad[e.connection] = Some(torque / (k / r2));
+                }
+            }
+        }
+        Ok(system)
+    }
+}
+
+/// The rubber law linearized at the static twist that `torque_nm` (own shaft) puts on it.
+fn rubber_law(
+    stage: &RubberStage,
+    name: &str,
+    torque_nm: f64,
+    temperature_c: f64,
+    r2: f64,
+    warnings: &mut Vec<String>,
+) -> Result<(ElementLaw, f64), PhysicsError> {
+    let twist = stage
+        .static_twist_rad(torque_nm, temperature_c)
+        .ok_or_else(|| PhysicsError::Twist {
+            connection: name.to_string(),
+            torque_nm,
+        })?;
+    let state = stage.state(None, temperature_c, twist);
+    for w in &state.warnings {
+        warnings.push(format!(
+            "rubber stage `{name}`: {} evaluated at {:.4}, outside its range [{}, {}]; held at the end value",
+            w.factor.key(), w.argument, w.range[0], w.range[1]
+        ));
+    }
+    for (value, key) in [
+        (state.alpha_tc, "temperature_stiffness_poly"),
+        (state.alpha_txi, "temperature_damping_poly"),
+        (state.alpha_x_tangent, "amplitude_poly"),
+    ] {
+        if value.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
+            return Err(PhysicsError::Factor {
+                connection: name.to_string(),
+                key,
+                value,
+            });
+        }
+    }
+    Ok((
+        ElementLaw::Rubber {
+            base_stiffness_nm_per_rad: state.tangent_stiffness_nm_per_rad * r2,
+            frequency_poly: stage.frequency_poly.clone(),
+            loss_factor: state.loss_factor,
+        },
+        twist,
+    ))
+}
+
+/// DOF index of every node: nodes joined by rigid gears share one (union-find).
+fn merge_rigid_gears(model: &Model) -> Vec<usize> {
+    let n = model.inertias.len();
+    let mut parent: Vec<usize> = (0..n).collect();
+    fn root(parent: &mut [usize], mut i: usize) -> usize {
+        while parent[i] != i {
+            parent[i] = parent[parent[i]];
+            i = parent[i];
+        }
+        i
+    }
+    for c in &model.connections {
+        if let ConnectionKind::Gear(g) = &c.kind
+            && g.mesh_stiffness_nm_per_rad.is_none()
+            && let (Some(a), Some(b)) = (model.node_index(&c.from), model.node_index(&c.to))
+        {
+            let (ra, rb) = (root(&mut parent, a), root(&mut parent, b));
+            parent[ra.max(rb)] = ra.min(rb);
+        }
+    }
+    let mut dof_of_root = vec![usize::MAX; n];
+    let mut next = 0;
+    (0..n)
+        .map(|i| {
+            let r = root(&mut parent, i);
+            if dof_of_root[r] == usize::MAX {
+                dof_of_root[r] = next;
+                next += 1;
+            }
+            dof_of_root[r]
+        })
+        .collect()
+}
+
+/// Number of connected components of the DOF graph that no element ties to ground: each
+/// is one rigid-body mode.
+fn free_components(n_dof: usize, elements: &[Element]) -> usize {
+    let mut parent: Vec<usize> = (0..=n_dof).collect(); // index n_dof is ground
+    fn root(parent: &mut [usize], mut i: usize) -> usize {
+        while parent[i] != i {
+            parent[i] = parent[parent[i]];
+            i = parent[i];
+        }
+        i
+    }
+    for e in elements {
+        let a = e.from_dof.unwrap_or(n_dof);
+        let b = e.to_dof.unwrap_or(n_dof);
+        let (ra, rb) = (root(&mut parent, a), root(&mut parent, b));
+        parent[ra.max(rb)] = ra.min(rb);
+    }
+    let ground = root(&mut parent, n_dof);
+    let mut roots: Vec<usize> = (0..n_dof).map(|i| root(&mut parent, i)).filter(|&r| r != ground).collect();
+    roots.sort_unstable();
+    roots.dedup();
+    roots.len()
+}

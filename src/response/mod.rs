@@ -1,0 +1,7 @@
+//! Frequency domain: steady forced response order by order over a speed sweep
+//! ([`sweep`]) and the synthesized peak torque over a cycle ([`peak`]).
+
+pub mod peak;
+pub mod sweep;
+
+pub use sweep::{Response, forced_response};
