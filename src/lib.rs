@@ -13,7 +13,8 @@
 
 #![warn(missing_docs)]
 
-pub mod model;
+pub mod check;
 pub mod modal;
+pub mod model;
 pub mod physics;
 pub mod response;

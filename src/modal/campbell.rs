@@ -43,7 +43,9 @@ pub fn speed_grid(from_rpm: f64, to_rpm: f64, step_rpm: f64) -> Vec<f64> {
         return vec![from_rpm];
     }
     let count = ((to_rpm - from_rpm) / step_rpm + 1e-9).floor() as usize;
-    let mut grid: Vec<f64> = (0..=count).map(|i| from_rpm + i as f64 * step_rpm).collect();
+    let mut grid: Vec<f64> = (0..=count)
+        .map(|i| from_rpm + i as f64 * step_rpm)
+        .collect();
     if to_rpm - grid[grid.len() - 1] > 1e-9 * step_rpm.max(1.0) {
         grid.push(to_rpm);
     }
@@ -51,10 +53,16 @@ pub fn speed_grid(from_rpm: f64, to_rpm: f64, step_rpm: f64) -> Vec<f64> {
 }
 
 /// The Campbell diagram of `system` over `speeds_rpm` for `orders`.
-pub fn campbell(system: &System, speeds_rpm: &[f64], orders: &[f64]) -> Result<Campbell, PhysicsError> {
+pub fn campbell(
+    system: &System,
+    speeds_rpm: &[f64],
+    orders: &[f64],
+) -> Result<Campbell, PhysicsError> {
     let modes = modes(system)?;
-    let frequency_hz: Vec<Vec<f64>> =
-        modes.iter().map(|m| vec![m.frequency_hz; speeds_rpm.len()]).collect();
+    let frequency_hz: Vec<Vec<f64>> = modes
+        .iter()
+        .map(|m| vec![m.frequency_hz; speeds_rpm.len()])
+        .collect();
     let mut crossings = Vec::new();
     for &order in orders {
         for (m, line) in frequency_hz.iter().enumerate() {

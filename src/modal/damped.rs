@@ -48,7 +48,11 @@ pub fn damped_modes(system: &System, modes: &[Mode]) -> Vec<DampedMode> {
                 .complex_eigenvalues()
                 .iter()
                 .filter(|l| l.im >= 0.0)
-                .min_by(|x, y| (x.norm() - omega).abs().total_cmp(&(y.norm() - omega).abs()))
+                .min_by(|x, y| {
+                    (x.norm() - omega)
+                        .abs()
+                        .total_cmp(&(y.norm() - omega).abs())
+                })
                 .copied();
             match nearest {
                 Some(l) if l.norm() > 0.0 => DampedMode {

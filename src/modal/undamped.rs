@@ -34,7 +34,10 @@ impl Mode {
             .zip(&system.speed_ratio)
             .map(|(&d, &r)| self.shape_dof[d] * r)
             .collect();
-        let peak = raw.iter().copied().fold(0.0_f64, |m, v| if v.abs() > m.abs() { v } else { m });
+        let peak = raw
+            .iter()
+            .copied()
+            .fold(0.0_f64, |m, v| if v.abs() > m.abs() { v } else { m });
         if peak == 0.0 {
             return raw;
         }
@@ -84,7 +87,11 @@ fn to_hz(omega2: f64) -> f64 {
 /// Undamped flexible modes of `system`, ascending in frequency, rubber stiffness at each
 /// mode's own frequency.
 pub fn modes(system: &System) -> Result<Vec<Mode>, PhysicsError> {
-    let inv_sqrt_m: Vec<f64> = system.inertia_kg_m2.iter().map(|j| 1.0 / j.sqrt()).collect();
+    let inv_sqrt_m: Vec<f64> = system
+        .inertia_kg_m2
+        .iter()
+        .map(|j| 1.0 / j.sqrt())
+        .collect();
     // First pass with rubber at α_f(0): exact when nothing depends on frequency.
     let (values, shapes) = solve_at(system, &inv_sqrt_m, 0.0, true);
     let Some(shapes) = shapes else {
@@ -104,7 +111,8 @@ pub fn modes(system: &System) -> Result<Vec<Mode>, PhysicsError> {
         .map(|i| {
             let f = mode_fixed_point(system, &inv_sqrt_m, i, to_hz(values[i]))?;
             let (w2, shapes) = solve_at(system, &inv_sqrt_m, f, true);
-            let shapes = shapes.ok_or_else(|| PhysicsError::NoConvergence("no mode shapes".into()))?;
+            let shapes =
+                shapes.ok_or_else(|| PhysicsError::NoConvergence("no mode shapes".into()))?;
             Ok(Mode {
                 frequency_hz: to_hz(w2[i]),
                 shape_dof: shapes.column(i).iter().copied().collect(),
@@ -131,7 +139,11 @@ fn mode_fixed_point(
             return Ok(f1);
         }
         let slope = (g1 - g0) / (f1 - f0);
-        let next = if slope.is_finite() && slope != 0.0 { f1 - g1 / slope } else { f1 + g1 };
+        let next = if slope.is_finite() && slope != 0.0 {
+            f1 - g1 / slope
+        } else {
+            f1 + g1
+        };
         (f0, g0, f1) = (f1, g1, if next > 0.0 { next } else { 0.5 * f1 });
     }
     Err(PhysicsError::NoConvergence(format!(

@@ -96,9 +96,16 @@ pub fn gas_torque_nm(engine: &Engine, load: f64, phi_rad: f64) -> f64 {
 }
 
 /// Oscillating-mass torque of one cylinder, N·m: `−m_osc(φ̇² r_a + φ̈ r_v) r_v` (eq. 3).
-pub fn inertia_torque_nm(engine: &Engine, phi_rad: f64, speed_rad_s: f64, accel_rad_s2: f64) -> f64 {
+pub fn inertia_torque_nm(
+    engine: &Engine,
+    phi_rad: f64,
+    speed_rad_s: f64,
+    accel_rad_s2: f64,
+) -> f64 {
     let rv = r_v(engine, phi_rad);
-    -oscillating_mass_kg(engine) * (speed_rad_s * speed_rad_s * r_a(engine, phi_rad) + accel_rad_s2 * rv) * rv
+    -oscillating_mass_kg(engine)
+        * (speed_rad_s * speed_rad_s * r_a(engine, phi_rad) + accel_rad_s2 * rv)
+        * rv
 }
 
 /// Total torque of one cylinder (eq. 3), N·m.
@@ -109,7 +116,8 @@ pub fn cylinder_torque_nm(
     speed_rad_s: f64,
     accel_rad_s2: f64,
 ) -> f64 {
-    gas_torque_nm(engine, load, phi_rad) + inertia_torque_nm(engine, phi_rad, speed_rad_s, accel_rad_s2)
+    gas_torque_nm(engine, load, phi_rad)
+        + inertia_torque_nm(engine, phi_rad, speed_rad_s, accel_rad_s2)
 }
 
 /// Cycle-mean torque of one cylinder at `load`, N·m (the gas torque's mean; the

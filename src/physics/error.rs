@@ -12,7 +12,9 @@ pub enum PhysicsError {
     #[error("the model has no nodes")]
     Empty,
     /// A rubber stage cannot carry the mean torque within 10 rad of twist.
-    #[error("rubber stage `{connection}` cannot carry the mean torque of {torque_nm:.1} N·m within 10 rad of twist")]
+    #[error(
+        "rubber stage `{connection}` cannot carry the mean torque of {torque_nm:.1} N·m within 10 rad of twist"
+    )]
     Twist {
         /// Connection name.
         connection: String,
@@ -30,7 +32,9 @@ pub enum PhysicsError {
         value: f64,
     },
     /// α_f is at or below zero at a frequency the analysis needs.
-    #[error("rubber stage `{connection}`: `frequency_poly` gives α_f = {value:.4} at {frequency_hz:.1} Hz (must be > 0; give `frequency_poly_range` to hold it beyond the measured range)")]
+    #[error(
+        "rubber stage `{connection}`: `frequency_poly` gives α_f = {value:.4} at {frequency_hz:.1} Hz (must be > 0; give `frequency_poly_range` to hold it beyond the measured range)"
+    )]
     FrequencyFactor {
         /// Connection name.
         connection: String,

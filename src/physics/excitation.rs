@@ -42,7 +42,10 @@ impl CylinderSpectrum {
         let k = k as usize;
         (
             self.gas_nm.get(k).copied().unwrap_or_default(),
-            self.inertia_nm_per_rad2_s2.get(k).copied().unwrap_or_default(),
+            self.inertia_nm_per_rad2_s2
+                .get(k)
+                .copied()
+                .unwrap_or_default(),
         )
     }
 }
@@ -52,14 +55,25 @@ pub fn cylinder_spectrum(engine: &Engine, load: f64) -> CylinderSpectrum {
     let n = SAMPLES_PER_CYCLE;
     let cycle_rad = engine.cycle_deg().to_radians();
     let phis = (0..n).map(|i| cycle_rad * i as f64 / n as f64);
-    let mut gas: Vec<f64> = phis.clone().map(|p| engine::gas_torque_nm(engine, load, p)).collect();
-    let mut inertia: Vec<f64> = phis.map(|p| engine::inertia_torque_nm(engine, p, 1.0, 0.0)).collect();
+    let mut gas: Vec<f64> = phis
+        .clone()
+        .map(|p| engine::gas_torque_nm(engine, load, p))
+        .collect();
+    let mut inertia: Vec<f64> = phis
+        .map(|p| engine::inertia_torque_nm(engine, p, 1.0, 0.0))
+        .collect();
     let fft = RealFftPlanner::<f64>::new().plan_fft_forward(n);
     let scale = |spectrum: Vec<Complex64>| -> Vec<Complex64> {
         spectrum
             .iter()
             .enumerate()
-            .map(|(k, c)| if k == 0 { c / n as f64 } else { 2.0 * c / n as f64 })
+            .map(|(k, c)| {
+                if k == 0 {
+                    c / n as f64
+                } else {
+                    2.0 * c / n as f64
+                }
+            })
             .collect()
     };
     let mut gas_spectrum = fft.make_output_vec();
@@ -102,7 +116,11 @@ impl Excitation {
             tabled: Vec::new(),
             mean_nm: vec![0.0; n],
         };
-        let node_dof = |name: &str| model.node_index(name).map(|i| (system.dof_of_node[i], system.speed_ratio[i]));
+        let node_dof = |name: &str| {
+            model
+                .node_index(name)
+                .map(|i| (system.dof_of_node[i], system.speed_ratio[i]))
+        };
         if let Some(engine) = &model.engine {
             let spectrum = cylinder_spectrum(engine, load);
             let firing = engine.firing_angles_or_even_deg();
@@ -120,16 +138,26 @@ impl Excitation {
             }
         }
         for h in &model.harmonics {
-            let Some((dof, ratio)) = node_dof(&h.at) else { continue };
-            let Some(q) = orders.iter().position(|&o| (o - h.order).abs() < ORDER_TOLERANCE) else {
+            let Some((dof, ratio)) = node_dof(&h.at) else {
+                continue;
+            };
+            let Some(q) = orders
+                .iter()
+                .position(|&o| (o - h.order).abs() < ORDER_TOLERANCE)
+            else {
                 continue;
             };
             let phase = Complex64::from_polar(ratio, h.phase_deg.to_radians());
             match &h.amplitude {
                 HarmonicAmplitude::Constant(a) => excitation.constant[q][dof] += phase * *a,
-                HarmonicAmplitude::BySpeed { speed_rpm, amplitude_nm } => excitation
-                    .tabled
-                    .push((q, dof, phase, speed_rpm.clone(), amplitude_nm.clone())),
+                HarmonicAmplitude::BySpeed {
+                    speed_rpm,
+                    amplitude_nm,
+                } => {
+                    excitation
+                        .tabled
+                        .push((q, dof, phase, speed_rpm.clone(), amplitude_nm.clone()))
+                }
             }
         }
         excitation

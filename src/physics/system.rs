@@ -82,7 +82,9 @@ impl Element {
                 frequency_poly,
                 loss_factor,
             } => {
-                let alpha_f = frequency_poly.as_ref().map_or(1.0, |p| p.eval(frequency_hz));
+                let alpha_f = frequency_poly
+                    .as_ref()
+                    .map_or(1.0, |p| p.eval(frequency_hz));
                 (base_stiffness_nm_per_rad * alpha_f, *loss_factor)
             }
         }
@@ -205,10 +207,18 @@ impl System {
             damping[dof_of_node[node]] += load.damping_nm_s_per_rad * ratios[node] * ratios[node];
         }
 
-        let dof = |name: &str| (name != GROUND).then(|| model.node_index(name).map(|i| dof_of_node[i])).flatten();
+        let dof = |name: &str| {
+            (name != GROUND)
+                .then(|| model.node_index(name).map(|i| dof_of_node[i]))
+                .flatten()
+        };
         let ratio_of = |name: &str| model.node_index(name).map_or(1.0, |i| ratios[i].abs());
         let shaft_ratio = |c: &crate::model::Connection| {
-            if c.from == GROUND { ratio_of(&c.to) } else { ratio_of(&c.from) }
+            if c.from == GROUND {
+                ratio_of(&c.to)
+            } else {
+                ratio_of(&c.from)
+            }
         };
 
         // Linear elements first (rubber at its linear static stiffness) for the static solve.
@@ -218,32 +228,47 @@ impl System {
             let (torque_ratio, law) = match &c.kind {
                 ConnectionKind::Shaft(s) => {
                     let r = shaft_ratio(c);
-                    (r, ElementLaw::Linear {
-                        stiffness_nm_per_rad: s.stiffness_nm_per_rad * r * r,
-                        damping_nm_s_per_rad: s.damping_nm_s_per_rad * r * r,
-                    })
+                    (
+                        r,
+                        ElementLaw::Linear {
+                            stiffness_nm_per_rad: s.stiffness_nm_per_rad * r * r,
+                            damping_nm_s_per_rad: s.damping_nm_s_per_rad * r * r,
+                        },
+                    )
                 }
                 ConnectionKind::Rubber(stage) => {
                     let r = shaft_ratio(c);
                     let temperature = point.temperature_c.unwrap_or(stage.temperature_c);
                     let state = stage.state(None, temperature, 0.0);
-                    (r, ElementLaw::Linear {
-                        stiffness_nm_per_rad: state.stiffness_nm_per_rad * r * r,
-                        damping_nm_s_per_rad: 0.0,
-                    })
+                    (
+                        r,
+                        ElementLaw::Linear {
+                            stiffness_nm_per_rad: state.stiffness_nm_per_rad * r * r,
+                            damping_nm_s_per_rad: 0.0,
+                        },
+                    )
                 }
                 ConnectionKind::Gear(g) => match g.mesh_stiffness_nm_per_rad {
                     None => continue,
                     Some(k) => {
                         let r = ratio_of(&c.to);
-                        (r, ElementLaw::Linear {
-                            stiffness_nm_per_rad: k * r * r,
-                            damping_nm_s_per_rad: 0.0,
-                        })
+                        (
+                            r,
+                            ElementLaw::Linear {
+                                stiffness_nm_per_rad: k * r * r,
+                                damping_nm_s_per_rad: 0.0,
+                            },
+                        )
                     }
                 },
             };
-            elements.push(Element { connection: j, from_dof, to_dof, torque_ratio, law });
+            elements.push(Element {
+                connection: j,
+                from_dof,
+                to_dof,
+                torque_ratio,
+                law,
+            });
         }
 
         let rigid_body_modes = free_components(n_dof, &elements);
@@ -274,7 +299,14 @@ impl System {
             match &c.kind {
                 ConnectionKind::Rubber(stage) => {
                     let temperature = point.temperature_c.unwrap_or(stage.temperature_c);
-                    let (law, twist) = rubber_law(stage, &c.name, torque, temperature, r2, &mut system.warnings)?;
+                    let (law, twist) = rubber_law(
+                        stage,
+                        &c.name,
+                        torque,
+                        temperature,
+                        r2,
+                        &mut system.warnings,
+                    )?;
                     e.law = law;
                     system.static_twist_rad[e.connection] = Some(twist);
                 }
@@ -385,7 +417,10 @@ fn free_components(n_dof: usize, elements: &[Element]) -> usize {
         parent[ra.max(rb)] = ra.min(rb);
     }
     let ground = root(&mut parent, n_dof);
-    let mut roots: Vec<usize> = (0..n_dof).map(|i| root(&mut parent, i)).filter(|&r| r != ground).collect();
+    let mut roots: Vec<usize> = (0..n_dof)
+        .map(|i| root(&mut parent, i))
+        .filter(|&r| r != ground)
+        .collect();
     roots.sort_unstable();
     roots.dedup();
     roots.len()

@@ -66,7 +66,11 @@ impl PeakSynthesizer {
                 }
                 let last = path.spectrum.len() - 1;
                 path.spectrum[last].im = 0.0;
-                if path.plan.process(&mut path.spectrum, &mut path.samples).is_err() {
+                if path
+                    .plan
+                    .process(&mut path.spectrum, &mut path.samples)
+                    .is_err()
+                {
                     return f64::NAN;
                 }
                 refined_peak(&path.samples)
@@ -122,13 +126,19 @@ mod tests {
     #[test]
     fn peak_of_known_signals() {
         let mut s = PeakSynthesizer::new(&[1.0, 24.0]);
-        let p = s.peak_abs(50.0, &[Complex64::default(), Complex64::from_polar(100.0, 0.3)]);
+        let p = s.peak_abs(
+            50.0,
+            &[Complex64::default(), Complex64::from_polar(100.0, 0.3)],
+        );
         assert!((p - 150.0).abs() < 0.15, "{p}");
         let p = s.peak_abs(0.0, &[Complex64::new(30.0, 0.0), Complex64::new(20.0, 0.0)]);
         assert!((p - 50.0).abs() < 0.05, "{p}");
         // Off-grid orders take the direct path: 1/3 and 1 in phase at θ = 0.
         let mut s = PeakSynthesizer::new(&[1.0 / 3.0, 1.0]);
-        let p = s.peak_abs(-10.0, &[Complex64::new(-5.0, 0.0), Complex64::new(-5.0, 0.0)]);
+        let p = s.peak_abs(
+            -10.0,
+            &[Complex64::new(-5.0, 0.0), Complex64::new(-5.0, 0.0)],
+        );
         assert!((p - 20.0).abs() < 0.02, "{p}");
     }
 }

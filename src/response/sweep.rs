@@ -76,8 +76,14 @@ pub fn forced_response(
                         "order {order} at {speed} rpm ({frequency_hz:.3} Hz) sits on an undamped resonance"
                     ))
                 })?;
-            for (node, (&dof, &ratio)) in system.dof_of_node.iter().zip(&system.speed_ratio).enumerate() {
-                response.ias_amplitude_rpm[node][q][s] = ratio.abs() * omega * angle[dof].norm() * RPM_PER_RAD_S;
+            for (node, (&dof, &ratio)) in system
+                .dof_of_node
+                .iter()
+                .zip(&system.speed_ratio)
+                .enumerate()
+            {
+                response.ias_amplitude_rpm[node][q][s] =
+                    ratio.abs() * omega * angle[dof].norm() * RPM_PER_RAD_S;
             }
             for (c, e) in system.elements.iter().enumerate() {
                 let (k, loss) = e.stiffness_at(frequency_hz);

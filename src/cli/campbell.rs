@@ -1,0 +1,136 @@
+//! `torsim campbell MODEL [--from-rpm A --to-rpm B --step-rpm S] [--csv FILE]`.
+
+use super::error::CliError;
+use super::format::{number, numbers, order_key, print_json, print_table, print_warnings};
+use super::input::{check_load, load_model, speed_grid};
+use serde_json::{Value, json};
+use std::io::Write;
+use torsim::modal::campbell;
+use torsim::physics::{OperatingPoint, System};
+
+/// Options of the command.
+pub struct Options<'a> {
+    /// Model path or `preset:NAME`.
+    pub model: &'a str,
+    /// Sweep start, rpm.
+    pub from_rpm: Option<f64>,
+    /// Sweep end, rpm.
+    pub to_rpm: Option<f64>,
+    /// Sweep step, rpm.
+    pub step_rpm: Option<f64>,
+    /// Engine load 0..1.
+    pub load: f64,
+    /// CSV file to write.
+    pub csv: Option<&'a str>,
+    /// JSON on stdout.
+    pub json: bool,
+}
+
+/// Runs the command.
+pub fn run(o: Options) -> Result<(), CliError> {
+    let model = load_model(o.model)?;
+    let speeds = speed_grid(&model, o.from_rpm, o.to_rpm, o.step_rpm)?;
+    let system = System::new(
+        &model,
+        OperatingPoint {
+            load: check_load(o.load)?,
+            temperature_c: None,
+        },
+    )?;
+    print_warnings(&system.warnings);
+    let orders = model.orders();
+    let diagram = campbell(&system, &speeds, &orders)?;
+    let operating = model.operation.operating_range_rpm;
+    let in_operating = |rpm: f64| operating.is_some_and(|[lo, hi]| rpm >= lo && rpm <= hi);
+    if let Some(path) = o.csv {
+        write_csv(path, &diagram)?;
+    }
+    if o.json {
+        let modes = diagram
+            .frequency_hz
+            .iter()
+            .enumerate()
+            .map(|(i, f)| Ok(json!({"mode": i + 1, "frequency_hz": numbers(f, "mode frequency")?})))
+            .collect::<Result<Vec<Value>, CliError>>()?;
+        let crossings = diagram
+            .crossings
+            .iter()
+            .map(|c| {
+                Ok(json!({
+                    "order": number(c.order, "order")?,
+                    "mode": c.mode,
+                    "rpm": number(c.speed_rpm, "crossing speed")?,
+                    "frequency_hz": number(c.frequency_hz, "crossing frequency")?,
+                    "in_operating_range": in_operating(c.speed_rpm),
+                }))
+            })
+            .collect::<Result<Vec<Value>, CliError>>()?;
+        return print_json(&json!({
+            "speeds_rpm": numbers(&speeds, "speed")?,
+            "orders": numbers(&orders, "order")?,
+            "operating_range_rpm": operating,
+            "modes": modes,
+            "crossings": crossings,
+        }));
+    }
+    println!(
+        "{}: modes (Hz) — constant over speed in the linear model",
+        model.name
+    );
+    for (i, m) in diagram.modes.iter().enumerate() {
+        println!("  mode {}: {:.3} Hz", i + 1, m.frequency_hz);
+    }
+    println!(
+        "crossings {} … {} rpm:",
+        speeds[0],
+        speeds[speeds.len() - 1]
+    );
+    let rows: Vec<Vec<String>> = diagram
+        .crossings
+        .iter()
+        .map(|c| {
+            vec![
+                order_key(c.order),
+                format!("{}", c.mode),
+                format!("{:.1}", c.speed_rpm),
+                format!("{:.2}", c.frequency_hz),
+                if in_operating(c.speed_rpm) {
+                    "IN OPERATING RANGE".into()
+                } else {
+                    String::new()
+                },
+            ]
+        })
+        .collect();
+    print_table(
+        &["order", "mode", "rpm", "f [Hz]", ""].map(String::from),
+        &rows,
+    );
+    Ok(())
+}
+
+/// Writes the diagram: one row per speed, each mode's frequency and each order line.
+fn write_csv(path: &str, d: &torsim::modal::Campbell) -> Result<(), CliError> {
+    let mut text = String::from("speed_rpm");
+    for i in 0..d.frequency_hz.len() {
+        text.push_str(&format!(",mode_{}_hz", i + 1));
+    }
+    for q in &d.orders {
+        text.push_str(&format!(",order_{}_hz", order_key(*q)));
+    }
+    text.push('\n');
+    for (s, speed) in d.speeds_rpm.iter().enumerate() {
+        text.push_str(&format!("{speed}"));
+        for f in &d.frequency_hz {
+            text.push_str(&format!(",{}", f[s]));
+        }
+        for q in &d.orders {
+            text.push_str(&format!(",{}", q * speed / 60.0));
+        }
+        text.push('\n');
+    }
+    let mut file = std::fs::File::create(path)
+        .map_err(|e| CliError::input(anyhow::anyhow!("{path}: cannot write: {e}")))?;
+    file.write_all(text.as_bytes())
+        .map_err(|e| CliError::input(anyhow::anyhow!("{path}: cannot write: {e}")))
+}

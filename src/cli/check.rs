@@ -1,0 +1,77 @@
+//! `torsim check [PRESET…]`: runs every `[expect]` block; exit 1 when one fails.
+
+use super::error::CliError;
+use super::format::print_json;
+use super::input::load_model;
+use serde_json::json;
+use std::path::Path;
+use torsim::check::run_checks;
+use torsim::model::presets::PRESETS;
+
+/// The model files to check: those named, else every `*.toml` in `./presets/`, else the
+/// presets shipped in the binary.
+fn targets(named: &[String]) -> Result<Vec<String>, CliError> {
+    if !named.is_empty() {
+        return Ok(named.to_vec());
+    }
+    let dir = Path::new("presets");
+    if dir.is_dir() {
+        let mut files: Vec<String> = std::fs::read_dir(dir)?
+            .filter_map(|e| e.ok().map(|e| e.path()))
+            .filter(|p| p.extension().is_some_and(|x| x == "toml"))
+            .map(|p| p.display().to_string())
+            .collect();
+        files.sort();
+        if !files.is_empty() {
+            return Ok(files);
+        }
+    }
+    Ok(PRESETS
+        .iter()
+        .map(|p| format!("preset:{}", p.name))
+        .collect())
+}
+
+/// Runs the command.
+pub fn run(named: &[String], json: bool) -> Result<(), CliError> {
+    let mut all_passed = true;
+    let mut reports = Vec::new();
+    for file in targets(named)? {
+        let model = load_model(&file)?;
+        let outcomes = run_checks(&model)?;
+        let passed = outcomes.iter().all(|o| o.passed);
+        all_passed &= passed;
+        if !json {
+            println!(
+                "{} {file} ({} checks)",
+                if passed { "PASS" } else { "FAIL" },
+                outcomes.len()
+            );
+            for o in &outcomes {
+                let mark = if o.passed { "ok  " } else { "FAIL" };
+                println!(
+                    "  {mark} {}: expected {}; computed {}",
+                    o.kind, o.expected, o.computed
+                );
+            }
+            if outcomes.is_empty() {
+                println!("  (no [expect] checks)");
+            }
+        }
+        let checks: Vec<_> = outcomes
+            .iter()
+            .map(|o| json!({"kind": o.kind, "expected": o.expected, "computed": o.computed, "value": o.value, "passed": o.passed}))
+            .collect();
+        reports.push(json!({"file": file, "passed": passed, "checks": checks}));
+    }
+    if json {
+        print_json(&json!({ "presets": reports }))?;
+    }
+    if all_passed {
+        Ok(())
+    } else {
+        Err(CliError::failed(anyhow::anyhow!(
+            "some expectations failed"
+        )))
+    }
+}

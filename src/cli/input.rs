@@ -1,0 +1,69 @@
+//! Loading the model a command names, and the speed grid it sweeps.
+
+use super::error::CliError;
+use std::path::Path;
+use torsim::model::{Model, parse_model, presets, read_model_file};
+
+/// Prefix naming a preset shipped in the binary instead of a file: `preset:cng-genset`.
+pub const PRESET_PREFIX: &str = "preset:";
+
+/// Reads the model `arg` names: a file path, or `preset:NAME` for a shipped preset.
+pub fn load_model(arg: &str) -> Result<Model, CliError> {
+    if let Some(name) = arg.strip_prefix(PRESET_PREFIX) {
+        let preset = presets::preset(name).ok_or_else(|| {
+            let names: Vec<&str> = presets::PRESETS.iter().map(|p| p.name).collect();
+            CliError::input(anyhow::anyhow!(
+                "no preset `{name}`; shipped presets: {}",
+                names.join(", ")
+            ))
+        })?;
+        return Ok(parse_model(preset.text, arg)?);
+    }
+    Ok(read_model_file(Path::new(arg))?)
+}
+
+/// The speed grid of a sweep: the options, else `[operation] speed_range_rpm`; the step
+/// defaults to 1/200 of the range.
+pub fn speed_grid(
+    model: &Model,
+    from_rpm: Option<f64>,
+    to_rpm: Option<f64>,
+    step_rpm: Option<f64>,
+) -> Result<Vec<f64>, CliError> {
+    let range = model.operation.speed_range_rpm;
+    let from = from_rpm.or(range.map(|r| r[0]));
+    let to = to_rpm.or(range.map(|r| r[1]));
+    let (Some(from), Some(to)) = (from, to) else {
+        return Err(CliError::input(anyhow::anyhow!(
+            "no speed range: give --from-rpm and --to-rpm, or `speed_range_rpm` in [operation]"
+        )));
+    };
+    if !(from.is_finite() && to.is_finite() && from >= 0.0 && to > from) {
+        return Err(CliError::input(anyhow::anyhow!(
+            "speed range {from} … {to} rpm: need 0 ≤ from < to"
+        )));
+    }
+    let step = step_rpm.unwrap_or((to - from) / 200.0);
+    if !(step.is_finite() && step > 0.0) {
+        return Err(CliError::input(anyhow::anyhow!(
+            "--step-rpm {step}: must be > 0"
+        )));
+    }
+    if (to - from) / step > 1.0e6 {
+        return Err(CliError::input(anyhow::anyhow!(
+            "--step-rpm {step}: more than a million speeds"
+        )));
+    }
+    Ok(torsim::modal::speed_grid(from, to, step))
+}
+
+/// Checks a `--load` value.
+pub fn check_load(load: f64) -> Result<f64, CliError> {
+    if (0.0..=1.0).contains(&load) {
+        Ok(load)
+    } else {
+        Err(CliError::input(anyhow::anyhow!(
+            "--load {load}: must be within 0 … 1"
+        )))
+    }
+}

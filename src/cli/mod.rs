@@ -1,0 +1,192 @@
+//! The commands of `spec/cli.md`: thin wrappers that parse options, call the library and
+//! print a table or one JSON document.
+
+mod campbell;
+mod check;
+mod coupling;
+pub mod error;
+mod format;
+mod input;
+mod modes;
+mod response;
+
+use clap::{Parser, Subcommand};
+use error::CliError;
+
+/// Torsional vibration of engine drivelines with highly flexible rubber couplings.
+///
+/// MODEL is a model file (spec/model-format.md) or `preset:NAME` for a preset shipped in
+/// the binary (cng-genset, test-rig-45sh, test-rig-60sh, test-rig-70sh, test-rig-mod1,
+/// test-rig-mod2, test-rig-mod3).
+#[derive(Debug, Parser)]
+#[command(name = "torsim", version, args_conflicts_with_subcommands = true)]
+pub struct Cli {
+    /// Model to open (default: the embedded cng-genset preset).
+    pub model: Option<String>,
+    /// The command; none opens the model.
+    #[command(subcommand)]
+    pub command: Option<Command>,
+}
+
+/// Headless commands.
+#[derive(Debug, Subcommand)]
+pub enum Command {
+    /// Undamped natural frequencies, damped frequencies, damping ratios and mode shapes.
+    Modes {
+        /// Model file or preset:NAME.
+        model: String,
+        /// Reference speed, rpm (the linear model's modes do not depend on it).
+        #[arg(long)]
+        speed_rpm: Option<f64>,
+        /// Engine load 0..1: the mean torque that twists the rubber stages.
+        #[arg(long, default_value_t = 1.0)]
+        load: f64,
+        /// Print one JSON document.
+        #[arg(long)]
+        json: bool,
+    },
+    /// Modes over speed, order lines and their crossings.
+    Campbell {
+        /// Model file or preset:NAME.
+        model: String,
+        /// First speed, rpm (default: [operation] speed_range_rpm).
+        #[arg(long)]
+        from_rpm: Option<f64>,
+        /// Last speed, rpm.
+        #[arg(long)]
+        to_rpm: Option<f64>,
+        /// Speed step, rpm (default: 1/200 of the range).
+        #[arg(long)]
+        step_rpm: Option<f64>,
+        /// Engine load 0..1.
+        #[arg(long, default_value_t = 1.0)]
+        load: f64,
+        /// Write the diagram as CSV.
+        #[arg(long)]
+        csv: Option<String>,
+        /// Print one JSON document.
+        #[arg(long)]
+        json: bool,
+    },
+    /// Steady forced response order by order over a speed sweep.
+    Response {
+        /// Model file or preset:NAME.
+        model: String,
+        /// First speed, rpm (default: [operation] speed_range_rpm).
+        #[arg(long)]
+        from_rpm: Option<f64>,
+        /// Last speed, rpm.
+        #[arg(long)]
+        to_rpm: Option<f64>,
+        /// Speed step, rpm (default: 1/200 of the range).
+        #[arg(long)]
+        step_rpm: Option<f64>,
+        /// Engine load 0..1: picks the pressure curve.
+        #[arg(long, default_value_t = 1.0)]
+        load: f64,
+        /// Orders, comma separated (default: [operation] orders).
+        #[arg(long, value_delimiter = ',')]
+        orders: Option<Vec<f64>>,
+        /// Print one JSON document.
+        #[arg(long)]
+        json: bool,
+    },
+    /// Runs the [expect] checks of presets (all of ./presets/ when none named).
+    Check {
+        /// Model files or preset:NAME.
+        presets: Vec<String>,
+        /// Print one JSON document.
+        #[arg(long)]
+        json: bool,
+    },
+    /// Each rubber stage's dynamic stiffness and damping by the seed 000 law.
+    Coupling {
+        /// Model file or preset:NAME.
+        model: String,
+        /// Vibration frequency, Hz (default: static, α_f = 1).
+        #[arg(long)]
+        frequency_hz: Option<f64>,
+        /// Rubber temperature, °C (default: each stage's temperature_c).
+        #[arg(long)]
+        temperature_c: Option<f64>,
+        /// Twist across the stage, degrees (default 0).
+        #[arg(long, default_value_t = 0.0)]
+        twist_deg: f64,
+        /// Print one JSON document.
+        #[arg(long)]
+        json: bool,
+    },
+}
+
+/// Runs the parsed command line.
+pub fn run(cli: Cli) -> Result<(), CliError> {
+    match cli.command {
+        None => {
+            let model = cli
+                .model
+                .unwrap_or_else(|| format!("preset:{}", torsim::model::presets::DEFAULT_PRESET));
+            eprintln!(
+                "torsim: the GUI is not part of this build yet; showing the model's modes and Campbell crossings."
+            );
+            modes::run(&model, None, 1.0, false)?;
+            println!();
+            campbell::run(campbell::Options {
+                model: &model,
+                from_rpm: None,
+                to_rpm: None,
+                step_rpm: None,
+                load: 1.0,
+                csv: None,
+                json: false,
+            })
+        }
+        Some(Command::Modes {
+            model,
+            speed_rpm,
+            load,
+            json,
+        }) => modes::run(&model, speed_rpm, load, json),
+        Some(Command::Campbell {
+            model,
+            from_rpm,
+            to_rpm,
+            step_rpm,
+            load,
+            csv,
+            json,
+        }) => campbell::run(campbell::Options {
+            model: &model,
+            from_rpm,
+            to_rpm,
+            step_rpm,
+            load,
+            csv: csv.as_deref(),
+            json,
+        }),
+        Some(Command::Response {
+            model,
+            from_rpm,
+            to_rpm,
+            step_rpm,
+            load,
+            orders,
+            json,
+        }) => response::run(response::Options {
+            model: &model,
+            from_rpm,
+            to_rpm,
+            step_rpm,
+            load,
+            orders,
+            json,
+        }),
+        Some(Command::Check { presets, json }) => check::run(&presets, json),
+        Some(Command::Coupling {
+            model,
+            frequency_hz,
+            temperature_c,
+            twist_deg,
+            json,
+        }) => coupling::run(&model, frequency_hz, temperature_c, twist_deg, json),
+    }
+}

@@ -1,0 +1,73 @@
+//! `torsim modes MODEL [--speed-rpm N] [--load L]`: natural frequencies, damped
+//! frequencies, damping ratios and mode shapes.
+
+use super::error::CliError;
+use super::format::{number, print_json, print_table, print_warnings};
+use super::input::{check_load, load_model};
+use serde_json::{Map, json};
+use torsim::modal::{damped_modes, modes};
+use torsim::physics::{OperatingPoint, System};
+
+/// Runs the command.
+pub fn run(model_arg: &str, speed_rpm: Option<f64>, load: f64, json: bool) -> Result<(), CliError> {
+    let model = load_model(model_arg)?;
+    let point = OperatingPoint {
+        load: check_load(load)?,
+        temperature_c: None,
+    };
+    let system = System::new(&model, point)?;
+    print_warnings(&system.warnings);
+    let modes = modes(&system)?;
+    let damped = damped_modes(&system, &modes);
+    if json {
+        let mut list = Vec::new();
+        for (i, (m, d)) in modes.iter().zip(&damped).enumerate() {
+            let mut shape = Map::new();
+            for (name, v) in system.node_names.iter().zip(m.shape_by_node(&system)) {
+                shape.insert(name.clone(), number(v, "mode shape")?);
+            }
+            list.push(json!({
+                "mode": i + 1,
+                "frequency_hz": number(m.frequency_hz, "natural frequency")?,
+                "damped_frequency_hz": number(d.frequency_hz, "damped frequency")?,
+                "damping_ratio": number(d.damping_ratio, "damping ratio")?,
+                "shape": shape,
+            }));
+        }
+        return print_json(&json!({
+            "model": model.name,
+            "speed_rpm": speed_rpm,
+            "load": point.load,
+            "rigid_body_modes": system.rigid_body_modes,
+            "modes": list,
+        }));
+    }
+    println!(
+        "{} — {} flexible modes ({} rigid-body mode(s) not listed), load {}",
+        model.name,
+        modes.len(),
+        system.rigid_body_modes,
+        point.load
+    );
+    let mut header: Vec<String> = ["mode", "f [Hz]", "f_d [Hz]", "ζ [%]"]
+        .map(String::from)
+        .to_vec();
+    header.extend(system.node_names.iter().cloned());
+    let rows: Vec<Vec<String>> = modes
+        .iter()
+        .zip(&damped)
+        .enumerate()
+        .map(|(i, (m, d))| {
+            let mut row = vec![
+                format!("{}", i + 1),
+                format!("{:.3}", m.frequency_hz),
+                format!("{:.3}", d.frequency_hz),
+                format!("{:.2}", 100.0 * d.damping_ratio),
+            ];
+            row.extend(m.shape_by_node(&system).iter().map(|v| format!("{v:+.4}")));
+            row
+        })
+        .collect();
+    print_table(&header, &rows);
+    Ok(())
+}
