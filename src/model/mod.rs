@@ -8,8 +8,10 @@ pub mod graph;
 pub mod presets;
 pub mod read;
 pub mod rubber;
+mod spanned;
 pub mod types;
 pub mod validate;
+mod validate_engine;
 pub mod write;
 
 pub use error::ModelError;

@@ -143,7 +143,12 @@ impl RubberStage {
 
     /// The law at vibration frequency `frequency_hz` (`None`: static, α_f = 1),
     /// rubber temperature `temperature_c` and twist `twist_rad` across the stage.
-    pub fn state(&self, frequency_hz: Option<f64>, temperature_c: f64, twist_rad: f64) -> RubberState {
+    pub fn state(
+        &self,
+        frequency_hz: Option<f64>,
+        temperature_c: f64,
+        twist_rad: f64,
+    ) -> RubberState {
         let mut warnings = Vec::new();
         let x_mm = self.radial_deformation_mm(twist_rad);
         let (alpha_x, alpha_x_tangent) = match (&self.amplitude_poly, self.pitch_radius_m()) {
@@ -155,7 +160,12 @@ impl RubberStage {
             _ => (1.0, 1.0),
         };
         let alpha_f = match frequency_hz {
-            Some(f) => factor(self.frequency_poly.as_ref(), Factor::Frequency, f, &mut warnings),
+            Some(f) => factor(
+                self.frequency_poly.as_ref(),
+                Factor::Frequency,
+                f,
+                &mut warnings,
+            ),
             None => 1.0,
         };
         let alpha_tc = factor(
@@ -203,7 +213,8 @@ impl RubberStage {
             return Some(torque_nm / k_lin);
         }
         let target = torque_nm.abs();
-        let carried = |twist: f64| self.state(None, temperature_c, twist).stiffness_nm_per_rad * twist;
+        let carried =
+            |twist: f64| self.state(None, temperature_c, twist).stiffness_nm_per_rad * twist;
         // Bracket: grow the upper end until it carries the torque.
         let mut lo = 0.0;
         let mut hi = (target / k_lin).min(10.0);
