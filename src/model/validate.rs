@@ -252,13 +252,13 @@ fn poly_shape(key: &str, p: &Poly) -> Check {
     for (i, c) in p.coeffs.iter().enumerate() {
         finite(&format!("{key}[{i}]"), *c)?;
     }
-    if let Some([lo, hi]) = p.range {
-        if !(lo.is_finite() && hi.is_finite() && lo < hi) {
-            fail(
-                format!("{key}_range"),
-                format!("must be [lo, hi] with lo < hi, found [{lo}, {hi}]"),
-            )?;
-        }
+    if let Some([lo, hi]) = p.range
+        && !(lo.is_finite() && hi.is_finite() && lo < hi)
+    {
+        fail(
+            format!("{key}_range"),
+            format!("must be [lo, hi] with lo < hi, found [{lo}, {hi}]"),
+        )?;
     }
     Ok(())
 }
