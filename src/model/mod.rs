@@ -5,8 +5,10 @@
 
 pub mod error;
 pub mod graph;
+mod key_lines;
 pub mod presets;
 pub mod read;
+mod read_sections;
 pub mod rubber;
 mod spanned;
 pub mod types;
