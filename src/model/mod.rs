@@ -5,11 +5,15 @@
 
 pub mod error;
 pub mod graph;
+mod key_lines;
 pub mod presets;
 pub mod read;
+mod read_sections;
 pub mod rubber;
+mod spanned;
 pub mod types;
 pub mod validate;
+mod validate_engine;
 pub mod write;
 
 pub use error::ModelError;

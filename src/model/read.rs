@@ -1,10 +1,46 @@
-//! Reading model files (stub, being written).
-use super::{Model, ModelError};
+//! Reading model files (`spec/model-format.md`, format 1): TOML text → [`Model`], with
+//! errors that name the file, the 1-based line and the key path.
+//!
+//! The reader checks the shape of the file (known keys, required keys, types); the value
+//! checks are [`validate`](super::validate::validate)'s, whose key paths are mapped back to
+//! lines here.
+
 use std::path::Path;
 
+use toml_edit::Document;
+
+use super::key_lines::{KeyLines, Lines};
+use super::read_sections::{engine, expect, harmonic, load, operation};
+use super::spanned::Tab;
+use super::types::{
+    Connection, ConnectionKind, Expect, Gear, Inertia, Model, Operation, Poly, RubberElements,
+    RubberStage, RubberStiffness, Shaft, Thermal,
+};
+use super::{ModelError, validate};
+
 /// Parses and validates a model file's text; `file` names it in errors.
-pub fn parse_model(_text: &str, file: &str) -> Result<Model, ModelError> {
-    Err(ModelError::at("", "reader not written yet").in_file(file))
+///
+/// Errors carry the file, the line (of the offending key, or of the header of the table
+/// that lacks a required key) and the key path, e.g. `connection[2].stiffness`.
+pub fn parse_model(text: &str, file: &str) -> Result<Model, ModelError> {
+    let lines = Lines::new(text);
+    let doc = Document::parse(text).map_err(|e| ModelError {
+        file: Some(file.to_string()),
+        line: e.span().map(|s| lines.line_of(s.start)),
+        key: String::new(),
+        message: format!("TOML syntax error: {}", e.message().trim()),
+    })?;
+    let key_lines = KeyLines::new(doc.as_table(), &lines);
+    let locate = |err: ModelError| {
+        let line = key_lines.line(&err.key);
+        ModelError {
+            line,
+            ..err.in_file(file)
+        }
+    };
+    let model = model(&Tab::new(doc.as_table(), "")).map_err(locate)?;
+    validate::validate(&model).map_err(locate)?;
+    Ok(model)
 }
 
 /// Reads, parses and validates a model file.
@@ -13,4 +49,199 @@ pub fn read_model_file(path: &Path) -> Result<Model, ModelError> {
         ModelError::at("", format!("cannot read: {e}")).in_file(path.display().to_string())
     })?;
     parse_model(&text, &path.display().to_string())
+}
+
+fn model(root: &Tab) -> Result<Model, ModelError> {
+    root.allow(&[
+        "format",
+        "name",
+        "description",
+        "inertia",
+        "connection",
+        "engine",
+        "harmonic",
+        "load",
+        "operation",
+        "expect",
+    ])?;
+    let format = root.req("format")?;
+    match format.as_integer() {
+        Some(1) => {}
+        Some(n) => {
+            return Err(ModelError::at(
+                "format",
+                format!("model format {n} is not supported (this reader knows format 1)"),
+            ));
+        }
+        None => return Err(super::spanned::wrong_type("format", "an integer", format)),
+    }
+    Ok(Model {
+        name: root.str("name")?,
+        description: root.opt_str("description")?.unwrap_or_default(),
+        inertias: root
+            .list("inertia")?
+            .iter()
+            .map(inertia)
+            .collect::<Result<_, _>>()?,
+        connections: root
+            .list("connection")?
+            .iter()
+            .map(connection)
+            .collect::<Result<_, _>>()?,
+        engine: root.opt_table("engine")?.map(|t| engine(&t)).transpose()?,
+        harmonics: root
+            .list("harmonic")?
+            .iter()
+            .map(harmonic)
+            .collect::<Result<_, _>>()?,
+        load: root.opt_table("load")?.map(|t| load(&t)).transpose()?,
+        operation: match root.opt_table("operation")? {
+            Some(t) => operation(&t)?,
+            None => Operation::default(),
+        },
+        expect: match root.opt_table("expect")? {
+            Some(t) => expect(&t)?,
+            None => Expect::default(),
+        },
+    })
+}
+
+fn inertia(t: &Tab) -> Result<Inertia, ModelError> {
+    t.allow(&["name", "inertia", "damping"])?;
+    Ok(Inertia {
+        name: t.str("name")?,
+        inertia_kg_m2: t.f64("inertia")?,
+        damping_nm_s_per_rad: t.f64_or("damping", 0.0)?,
+    })
+}
+
+const COMMON: [&str; 4] = ["kind", "name", "from", "to"];
+const POLYS: [&str; 4] = [
+    "amplitude_poly",
+    "frequency_poly",
+    "temperature_stiffness_poly",
+    "temperature_damping_poly",
+];
+
+fn connection(t: &Tab) -> Result<Connection, ModelError> {
+    let kind_name = t.str("kind")?;
+    let (extra, kind): (&[&str], _) = match kind_name.as_str() {
+        "shaft" => (&["stiffness", "damping"], shaft as fn(&Tab) -> _),
+        "rubber" => (
+            &[
+                "stiffness",
+                "elements",
+                "psi",
+                "temperature_c",
+                "thermal",
+                "amplitude_poly",
+                "amplitude_poly_range",
+                "frequency_poly",
+                "frequency_poly_range",
+                "temperature_stiffness_poly",
+                "temperature_stiffness_poly_range",
+                "temperature_damping_poly",
+                "temperature_damping_poly_range",
+            ],
+            rubber,
+        ),
+        "gear" => (&["ratio", "mesh_stiffness", "backlash_deg"], gear),
+        other => {
+            return Err(ModelError::at(
+                t.key("kind"),
+                format!("unknown connection kind `{other}` (expected shaft, rubber or gear)"),
+            ));
+        }
+    };
+    t.allow(&[&COMMON[..], extra].concat())?;
+    let from = t.str("from")?;
+    let to = t.str("to")?;
+    let name = match t.opt_str("name")? {
+        Some(name) => name,
+        None => Connection::default_name(&from, &to),
+    };
+    Ok(Connection {
+        name,
+        from,
+        to,
+        kind: kind(t)?,
+    })
+}
+
+fn shaft(t: &Tab) -> Result<ConnectionKind, ModelError> {
+    Ok(ConnectionKind::Shaft(Shaft {
+        stiffness_nm_per_rad: t.f64("stiffness")?,
+        damping_nm_s_per_rad: t.f64_or("damping", 0.0)?,
+    }))
+}
+
+fn rubber(t: &Tab) -> Result<ConnectionKind, ModelError> {
+    let stiffness = match (t.opt_f64("stiffness")?, t.opt_table("elements")?) {
+        (Some(k), None) => RubberStiffness::Direct(k),
+        (None, Some(e)) => {
+            e.allow(&["count", "per_side", "pitch_diameter", "radial_stiffness"])?;
+            RubberStiffness::Elements(RubberElements {
+                count: e.u32("count")?,
+                per_side: e.u32("per_side")?,
+                pitch_diameter_m: e.f64("pitch_diameter")?,
+                radial_stiffness_n_per_m: e.f64("radial_stiffness")?,
+            })
+        }
+        (Some(_), Some(_)) => {
+            return Err(ModelError::at(
+                t.key("elements"),
+                "give either `stiffness` or `elements`, not both",
+            ));
+        }
+        (None, None) => {
+            return Err(ModelError::at(
+                t.key("stiffness"),
+                "missing required key `stiffness` (or `elements`)",
+            ));
+        }
+    };
+    let [amplitude, frequency, temp_k, temp_d] = POLYS.map(|key| poly(t, key));
+    let thermal = match t.opt_table("thermal")? {
+        None => None,
+        Some(h) => {
+            h.allow(&["capacity_j_per_k", "conductance_w_per_k", "ambient_c"])?;
+            Some(Thermal {
+                capacity_j_per_k: h.f64("capacity_j_per_k")?,
+                conductance_w_per_k: h.f64("conductance_w_per_k")?,
+                ambient_c: h.f64("ambient_c")?,
+            })
+        }
+    };
+    Ok(ConnectionKind::Rubber(RubberStage {
+        stiffness,
+        psi: t.f64("psi")?,
+        temperature_c: t.f64_or("temperature_c", 25.0)?,
+        amplitude_poly: amplitude?,
+        frequency_poly: frequency?,
+        temperature_stiffness_poly: temp_k?,
+        temperature_damping_poly: temp_d?,
+        thermal,
+    }))
+}
+
+/// `key = [a2, a1, a0]` with an optional `key_range = [lo, hi]`.
+fn poly(t: &Tab, key: &str) -> Result<Option<Poly>, ModelError> {
+    let range_key = format!("{key}_range");
+    let range = t.opt_array::<2>(&range_key)?;
+    match t.opt_array::<3>(key)? {
+        Some(coeffs) => Ok(Some(Poly { coeffs, range })),
+        None if range.is_some() => Err(ModelError::at(
+            t.key(&range_key),
+            format!("`{range_key}` is given without `{key}`"),
+        )),
+        None => Ok(None),
+    }
+}
+
+fn gear(t: &Tab) -> Result<ConnectionKind, ModelError> {
+    Ok(ConnectionKind::Gear(Gear {
+        ratio: t.f64("ratio")?,
+        mesh_stiffness_nm_per_rad: t.opt_f64("mesh_stiffness")?,
+        backlash_deg: t.f64_or("backlash_deg", 0.0)?,
+    }))
 }

@@ -63,6 +63,8 @@ impl Connection {
 }
 
 /// The three kinds of connection of format 1.
+// Connections are few and edited in place; boxing the rubber stage is not worth it.
+#[allow(clippy::large_enum_variant)]
 #[derive(Debug, Clone, PartialEq)]
 pub enum ConnectionKind {
     /// `kind = "shaft"`: linear spring and viscous damper in parallel.

@@ -1,7 +1,264 @@
-//! Validation of a model (stub, being written).
-use super::{Model, ModelError};
+//! Semantic checks on an in-memory [`Model`]: value ranges, names, the graph, the engine,
+//! the harmonics, the operation ranges and the expectations (`spec/model-format.md`).
+//!
+//! The GUI calls [`validate`] on edited models, so errors carry key paths only (as in the
+//! model file, e.g. `connection[2].stiffness`); the reader adds file and line.
 
-/// Checks a model for everything the file format requires.
+use std::collections::HashSet;
+
+use super::error::ModelError;
+use super::graph;
+use super::types::{ConnectionKind, GROUND, Model, Poly, RubberStage, RubberStiffness};
+use super::validate_engine;
+
+/// Result of one check.
+pub(crate) type Check = Result<(), ModelError>;
+
+/// An error at `key`.
+pub(crate) fn fail(key: impl Into<String>, message: impl Into<String>) -> Check {
+    Err(ModelError::at(key, message))
+}
+
+/// `x` must be finite and > 0.
+pub(crate) fn positive(key: &str, x: f64) -> Check {
+    if x.is_finite() && x > 0.0 {
+        Ok(())
+    } else {
+        fail(key, format!("must be a positive finite number, found {x}"))
+    }
+}
+
+/// `x` must be finite and ≥ 0.
+pub(crate) fn non_negative(key: &str, x: f64) -> Check {
+    if x.is_finite() && x >= 0.0 {
+        Ok(())
+    } else {
+        fail(key, format!("must be a finite number ≥ 0, found {x}"))
+    }
+}
+
+/// `x` must be finite.
+pub(crate) fn finite(key: &str, x: f64) -> Check {
+    if x.is_finite() {
+        Ok(())
+    } else {
+        fail(key, format!("must be a finite number, found {x}"))
+    }
+}
+
+/// `[min, max]` with `0 ≤ min < max`, finite.
+pub(crate) fn range(key: &str, [lo, hi]: [f64; 2]) -> Check {
+    if lo.is_finite() && hi.is_finite() && 0.0 <= lo && lo < hi {
+        Ok(())
+    } else {
+        fail(
+            key,
+            format!("must be [min, max] with 0 ≤ min < max, found [{lo}, {hi}]"),
+        )
+    }
+}
+
+/// Values strictly increasing.
+pub(crate) fn increasing(key: &str, values: &[f64]) -> Check {
+    match values.windows(2).position(|w| w[0] >= w[1]) {
+        None => Ok(()),
+        Some(i) => fail(
+            format!("{key}[{}]", i + 1),
+            format!(
+                "values must be strictly increasing, but {} follows {}",
+                values[i + 1],
+                values[i]
+            ),
+        ),
+    }
+}
+
+/// Checks a model for everything the file format requires (see the module docs).
 pub fn validate(model: &Model) -> Result<(), ModelError> {
-    super::graph::speed_ratios(model).map(|_| ())
+    nodes(model)?;
+    connections(model)?;
+    for (i, node) in model.inertias.iter().enumerate() {
+        let used = model
+            .connections
+            .iter()
+            .any(|c| c.from == node.name || c.to == node.name);
+        if !used && model.inertias.len() > 1 {
+            fail(
+                format!("inertia[{i}]"),
+                format!("node `{}` is connected to nothing", node.name),
+            )?;
+        }
+    }
+    graph::speed_ratios(model)?;
+    if let Some(engine) = &model.engine {
+        validate_engine::engine(model, engine)?;
+    }
+    validate_engine::harmonics(model)?;
+    if let Some(load) = &model.load {
+        if let Some(at) = &load.at {
+            known_node(model, "load.at", at)?;
+        }
+        non_negative("load.damping", load.damping_nm_s_per_rad)?;
+    }
+    validate_engine::operation_and_expect(model)
+}
+
+/// `name` must be a node of the model.
+pub(crate) fn known_node(model: &Model, key: &str, name: &str) -> Check {
+    if model.node_index(name).is_some() {
+        Ok(())
+    } else {
+        fail(key, format!("unknown node `{name}`"))
+    }
+}
+
+fn nodes(model: &Model) -> Check {
+    let mut seen = HashSet::new();
+    for (i, node) in model.inertias.iter().enumerate() {
+        let key = format!("inertia[{i}]");
+        if node.name == GROUND {
+            fail(format!("{key}.name"), "`ground` is reserved for the frame")?;
+        }
+        if node.name.is_empty() {
+            fail(format!("{key}.name"), "node name is empty")?;
+        }
+        if !seen.insert(node.name.as_str()) {
+            fail(
+                format!("{key}.name"),
+                format!("duplicate node name `{}`", node.name),
+            )?;
+        }
+        positive(&format!("{key}.inertia"), node.inertia_kg_m2)?;
+        non_negative(&format!("{key}.damping"), node.damping_nm_s_per_rad)?;
+    }
+    Ok(())
+}
+
+fn connections(model: &Model) -> Check {
+    let mut seen = HashSet::new();
+    for (j, c) in model.connections.iter().enumerate() {
+        let key = format!("connection[{j}]");
+        let k = |sub: &str| format!("{key}.{sub}");
+        if !seen.insert(c.name.as_str()) {
+            fail(k("name"), format!("duplicate connection name `{}`", c.name))?;
+        }
+        for (end, name) in [("from", &c.from), ("to", &c.to)] {
+            if name != GROUND {
+                known_node(model, &k(end), name)?;
+            }
+        }
+        if c.from == GROUND && c.to == GROUND {
+            fail(k("to"), "both ends are `ground`")?;
+        }
+        if c.from == c.to {
+            fail(k("to"), format!("connects node `{}` to itself", c.from))?;
+        }
+        match &c.kind {
+            ConnectionKind::Shaft(s) => {
+                positive(&k("stiffness"), s.stiffness_nm_per_rad)?;
+                non_negative(&k("damping"), s.damping_nm_s_per_rad)?;
+            }
+            ConnectionKind::Rubber(r) => rubber(&key, r)?,
+            ConnectionKind::Gear(g) => {
+                let end = if c.from == GROUND { "from" } else { "to" };
+                if c.from == GROUND || c.to == GROUND {
+                    fail(k(end), "a gear cannot connect to `ground`")?;
+                }
+                if !g.ratio.is_finite() || g.ratio == 0.0 {
+                    fail(
+                        k("ratio"),
+                        format!("must be finite and non-zero, found {}", g.ratio),
+                    )?;
+                }
+                if let Some(mesh) = g.mesh_stiffness_nm_per_rad {
+                    positive(&k("mesh_stiffness"), mesh)?;
+                }
+                non_negative(&k("backlash_deg"), g.backlash_deg)?;
+            }
+        }
+    }
+    Ok(())
+}
+
+fn rubber(key: &str, r: &RubberStage) -> Check {
+    let k = |sub: &str| format!("{key}.{sub}");
+    match &r.stiffness {
+        RubberStiffness::Direct(s) => positive(&k("stiffness"), *s)?,
+        RubberStiffness::Elements(e) => {
+            if e.count < 2 {
+                fail(
+                    k("elements.count"),
+                    format!("must be at least 2, found {}", e.count),
+                )?;
+            }
+            if e.per_side == 0 || e.per_side >= e.count {
+                fail(
+                    k("elements.per_side"),
+                    format!(
+                        "must satisfy 0 < per_side < count ({}), found {}",
+                        e.count, e.per_side
+                    ),
+                )?;
+            }
+            positive(&k("elements.pitch_diameter"), e.pitch_diameter_m)?;
+            positive(&k("elements.radial_stiffness"), e.radial_stiffness_n_per_m)?;
+        }
+    }
+    positive(&k("psi"), r.psi)?;
+    finite(&k("temperature_c"), r.temperature_c)?;
+    if r.amplitude_poly.is_some() && matches!(r.stiffness, RubberStiffness::Direct(_)) {
+        fail(
+            k("amplitude_poly"),
+            "`amplitude_poly` needs `elements` (the deformation is measured at the elements)",
+        )?;
+    }
+    let polys = [
+        ("amplitude_poly", &r.amplitude_poly),
+        ("frequency_poly", &r.frequency_poly),
+        ("temperature_stiffness_poly", &r.temperature_stiffness_poly),
+        ("temperature_damping_poly", &r.temperature_damping_poly),
+    ];
+    for (name, poly) in polys {
+        if let Some(p) = poly {
+            poly_shape(&k(name), p)?;
+        }
+    }
+    if let Some(t) = &r.thermal {
+        positive(&k("thermal.capacity_j_per_k"), t.capacity_j_per_k)?;
+        positive(&k("thermal.conductance_w_per_k"), t.conductance_w_per_k)?;
+        finite(&k("thermal.ambient_c"), t.ambient_c)?;
+    }
+    let temperatures = std::iter::once(("temperature_c", r.temperature_c)).chain(
+        r.thermal
+            .as_ref()
+            .map(|t| ("thermal.ambient_c", t.ambient_c)),
+    );
+    for (where_, temp) in temperatures {
+        for (name, poly) in &polys[2..] {
+            let Some(p) = poly else { continue };
+            let factor = p.eval(temp);
+            if !(factor.is_finite() && factor > 0.0) {
+                fail(
+                    k(name),
+                    format!("gives the factor {factor} (must be > 0) at {where_} = {temp} °C"),
+                )?;
+            }
+        }
+    }
+    Ok(())
+}
+
+fn poly_shape(key: &str, p: &Poly) -> Check {
+    for (i, c) in p.coeffs.iter().enumerate() {
+        finite(&format!("{key}[{i}]"), *c)?;
+    }
+    if let Some([lo, hi]) = p.range
+        && !(lo.is_finite() && hi.is_finite() && lo < hi)
+    {
+        fail(
+            format!("{key}_range"),
+            format!("must be [lo, hi] with lo < hi, found [{lo}, {hi}]"),
+        )?;
+    }
+    Ok(())
 }
