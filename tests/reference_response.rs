@@ -1,0 +1,184 @@
+//! Forced response against closed forms, and a geared model against its referred twin.
+
+use std::f64::consts::TAU;
+use torsim::model::parse_model;
+use torsim::physics::{Excitation, OperatingPoint, System};
+use torsim::response::forced_response;
+
+fn rel(a: f64, b: f64) -> f64 {
+    (a - b).abs() / b.abs()
+}
+
+/// One inertia on a shaft (k, c) to ground under T cos(qθ*): Θ = T/(k − ω²J + iωc).
+/// IAS amplitude = ω|Θ|·60/2π, shaft torque = |(k + iωc)Θ|, viscous loss ½cω²|Θ|².
+/// The same inertia on a rubber stage (k, ψ): Θ = T/(k(1 + iψ/2π) − ω²J), and DIN 740
+/// loss ψ·½k|Θ|² per cycle. Tolerance 1e-12: one 1×1 complex division.
+#[test]
+fn single_dof_closed_form() {
+    let (j, k, c, t, order) = (0.35, 2.2e4, 6.0, 40.0, 2.0);
+    let text = format!(
+        r#"format = 1
+name = "1dof"
+[[inertia]]
+name = "a"
+inertia = {j}
+[[connection]]
+kind = "shaft"
+from = "a"
+to = "ground"
+stiffness = {k}
+damping = {c}
+[[harmonic]]
+at = "a"
+order = {order}
+amplitude = {t}
+phase_deg = 30.0
+"#
+    );
+    let model = parse_model(&text, "1dof.toml").unwrap();
+    let system = System::new(&model, OperatingPoint::default()).unwrap();
+    let excitation = Excitation::new(&model, &system, 1.0, &[order]);
+    let speeds: Vec<f64> = (1..=60).map(|i| 40.0 * i as f64).collect();
+    let r = forced_response(&system, &excitation, &speeds).unwrap();
+    for (s, &n) in speeds.iter().enumerate() {
+        let w = order * n * TAU / 60.0;
+        let theta = t / ((k - w * w * j).powi(2) + (w * c).powi(2)).sqrt();
+        assert!(rel(r.ias_amplitude_rpm[0][0][s], w * theta * 60.0 / TAU) < 1e-12);
+        assert!(rel(r.torque_amplitude_nm[0][0][s], (k * k + w * w * c * c).sqrt() * theta) < 1e-12);
+        assert!(rel(r.power_loss_w[0][s], 0.5 * c * w * w * theta * theta) < 1e-12);
+        // One order around zero mean: the peak is the amplitude.
+        assert!(rel(r.torque_peak_nm[0][s], (k * k + w * w * c * c).sqrt() * theta) < 1e-3);
+    }
+
+    let psi = 0.9;
+    let rubber = text.replace("kind = \"shaft\"", "kind = \"rubber\"").replace(&format!("damping = {c}"), &format!("psi = {psi}"));
+    let model = parse_model(&rubber, "1dof-rubber.toml").unwrap();
+    let system = System::new(&model, OperatingPoint::default()).unwrap();
+    let excitation = Excitation::new(&model, &system, 1.0, &[order]);
+    let r = forced_response(&system, &excitation, &speeds).unwrap();
+    let xi = psi / TAU;
+    for (s, &n) in speeds.iter().enumerate() {
+        let w = order * n * TAU / 60.0;
+        let theta = t / ((k - w * w * j).powi(2) + (k * xi).powi(2)).sqrt();
+        assert!(rel(r.ias_amplitude_rpm[0][0][s], w * theta * 60.0 / TAU) < 1e-12);
+        let loss = psi * 0.5 * k * theta * theta * w / TAU;
+        assert!(rel(r.power_loss_w[0][s], loss) < 1e-12, "DIN 740 loss at {n} rpm");
+    }
+}
+
+const GEARED: &str = r#"format = 1
+name = "geared"
+[[inertia]]
+name = "crank"
+inertia = 0.3
+[[inertia]]
+name = "gear_out"
+inertia = 0.05
+[[inertia]]
+name = "coupling"
+inertia = 0.9
+[[inertia]]
+name = "brake"
+inertia = 2.0
+[[connection]]
+kind = "gear"
+from = "crank"
+to = "gear_out"
+ratio = 0.3333333333333333
+[[connection]]
+kind = "shaft"
+name = "shaft"
+from = "gear_out"
+to = "coupling"
+stiffness = 9.0e4
+damping = 3.0
+[[connection]]
+kind = "rubber"
+name = "rubber"
+from = "coupling"
+to = "brake"
+stiffness = 4.5e3
+psi = 1.0
+[[harmonic]]
+at = "crank"
+order = 1.0
+amplitude = 150.0
+[[harmonic]]
+at = "brake"
+order = 1.0
+amplitude = 60.0
+phase_deg = 90.0
+"#;
+
+/// The geared model's response equals its hand-referred twin: inertias and stiffness
+/// × r², the torque at the brake × r; own-shaft IAS = r × referred IAS, own-shaft torque =
+/// referred torque / r. Tolerance 1e-11: two 3×3 complex LU solves.
+#[test]
+fn geared_response_equals_referred_twin() {
+    let r: f64 = 1.0 / 3.0;
+    let twin = format!(
+        r#"format = 1
+name = "twin"
+[[inertia]]
+name = "crank"
+inertia = {}
+[[inertia]]
+name = "coupling"
+inertia = {}
+[[inertia]]
+name = "brake"
+inertia = {}
+[[connection]]
+kind = "shaft"
+name = "shaft"
+from = "crank"
+to = "coupling"
+stiffness = {}
+damping = {}
+[[connection]]
+kind = "rubber"
+name = "rubber"
+from = "coupling"
+to = "brake"
+stiffness = {}
+psi = 1.0
+[[harmonic]]
+at = "crank"
+order = 1.0
+amplitude = 150.0
+[[harmonic]]
+at = "brake"
+order = 1.0
+amplitude = {}
+phase_deg = 90.0
+"#,
+        0.3 + 0.05 * r * r,
+        0.9 * r * r,
+        2.0 * r * r,
+        9.0e4 * r * r,
+        3.0 * r * r,
+        4.5e3 * r * r,
+        60.0 * r
+    );
+    let run = |text: &str| {
+        let model = parse_model(text, "m.toml").unwrap();
+        let system = System::new(&model, OperatingPoint::default()).unwrap();
+        let excitation = Excitation::new(&model, &system, 1.0, &[1.0]);
+        let speeds: Vec<f64> = (1..=100).map(|i| 20.0 * i as f64).collect();
+        forced_response(&system, &excitation, &speeds).unwrap()
+    };
+    let (g, t) = (run(GEARED), run(&twin));
+    for s in 0..100 {
+        assert!(rel(g.ias_amplitude_rpm[0][0][s], t.ias_amplitude_rpm[0][0][s]) < 1e-11, "crank");
+        assert!(rel(g.ias_amplitude_rpm[2][0][s], r * t.ias_amplitude_rpm[1][0][s]) < 1e-11, "coupling");
+        assert!(rel(g.ias_amplitude_rpm[3][0][s], r * t.ias_amplitude_rpm[2][0][s]) < 1e-11, "brake");
+        for c in 0..2 {
+            assert!(rel(g.torque_amplitude_nm[c][0][s], t.torque_amplitude_nm[c][0][s] / r) < 1e-11, "torque {c}");
+            assert!(rel(g.power_loss_w[c][s], t.power_loss_w[c][s]) < 1e-11, "power {c}");
+        }
+    }
+    // The resonance is really in the sweep: the response varies by more than 10×.
+    let a = &g.ias_amplitude_rpm[2][0];
+    let (lo, hi) = a.iter().fold((f64::MAX, 0.0_f64), |(l, h), &v| (l.min(v), h.max(v)));
+    assert!(hi > 10.0 * lo, "{lo} … {hi}");
+}
