@@ -1,15 +1,42 @@
 //! # torsim — torsional vibration of engine drivelines with rubber couplings
 //!
-//! The library has no GUI and prints nothing; the `torsim` binary (CLI and GUI) is a thin
-//! front end on it.
+//! The library computes; it has no GUI and prints nothing. The `torsim` binary (its CLI,
+//! later its GUI) is a thin front end on these calls, so every number it shows can be
+//! reproduced here and checked by a test.
 //!
-//! - [`model`]: the driveline as the user writes it, model files, validation, the rubber
-//!   coupling law of seed 000.
-//! - [`physics`]: the linear system at an operating point — M, K(f), C referred to the
-//!   engine shaft through the gear tree — and the engine excitation of seed 001 eq. 3–5.
-//! - [`modal`]: natural frequencies, mode shapes, damped modes, the Campbell diagram.
-//! - [`response`]: steady forced response order by order over a speed sweep.
-//! - [`check`]: the `[expect]` checks of presets.
+//! ## A tour
+//!
+//! - [`model`] — the driveline as the user writes it (`spec/model-format.md`): inertias,
+//!   shafts, rubber stages, gears, the engine, prescribed harmonics, load, operation and
+//!   expectations; reading with errors that name file, line and key; writing back; the
+//!   rubber coupling law of seed 000 ([`model::rubber`]: eq. 1–2, 8–15); the presets
+//!   shipped in the binary ([`model::presets`]).
+//! - [`physics`] — the linear driveline at an operating point ([`physics::System`]):
+//!   inertias and stiffnesses referred to the engine shaft through the gear tree, rubber
+//!   stages linearized at the static twist of the mean torque, the engine's cycle-mean
+//!   reciprocating inertia; the cylinder torque of seed 001 eq. 3–5
+//!   ([`physics::engine`]) and its harmonics per order ([`physics::Excitation`]).
+//! - [`modal`] — undamped modes (rubber at each mode's own frequency), damped frequencies
+//!   and damping ratios, the Campbell diagram and its crossings.
+//! - [`response`] — steady forced response order by order over a speed sweep: IAS per
+//!   node, torque per connection, peak torque over a cycle, DIN 740 power loss.
+//! - [`check`] — the `[expect]` checks that `torsim check` runs on presets.
+//!
+//! ## Example
+//!
+//! ```
+//! use torsim::model::{parse_model, presets};
+//! use torsim::physics::{OperatingPoint, System};
+//!
+//! let preset = presets::preset("test-rig-70sh").expect("shipped");
+//! let model = parse_model(preset.text, "test-rig-70sh.toml")?;
+//! let system = System::new(&model, OperatingPoint::default())?;
+//! let modes = torsim::modal::modes(&system)?;
+//! assert_eq!(modes.len(), 3); // seed 001's 3-DOF model, brake side as frame
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+//!
+//! Units are SI unless a name says otherwise (`_rpm`, `_hz`, `_deg`, `_c`, `_bar`, `_mm`).
 
 #![warn(missing_docs)]
 

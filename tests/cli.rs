@@ -15,8 +15,13 @@ fn torsim(args: &[&str]) -> Output {
 /// Runs a command that must succeed and print exactly one JSON document on stdout.
 fn json(args: &[&str]) -> Value {
     let out = torsim(args);
-    assert!(out.status.success(), "{args:?}: {}", String::from_utf8_lossy(&out.stderr));
-    serde_json::from_slice(&out.stdout).unwrap_or_else(|e| panic!("{args:?}: stdout is not one JSON document: {e}"))
+    assert!(
+        out.status.success(),
+        "{args:?}: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    serde_json::from_slice(&out.stdout)
+        .unwrap_or_else(|e| panic!("{args:?}: stdout is not one JSON document: {e}"))
 }
 
 const THREE_DOF: &str = "tests/data/spec-examples/three-dof.toml";
@@ -26,15 +31,28 @@ const RUBBER: &str = "tests/data/spec-examples/rubber-elements.toml";
 fn modes_json_shape() {
     let v = json(&["modes", THREE_DOF, "--json"]);
     let modes = v["modes"].as_array().unwrap();
-    assert_eq!(modes.len(), 3, "grounded 3-DOF: three flexible modes, no rigid one");
+    assert_eq!(
+        modes.len(),
+        3,
+        "grounded 3-DOF: three flexible modes, no rigid one"
+    );
     for (i, m) in modes.iter().enumerate() {
         assert_eq!(m["mode"], i + 1);
         assert!(m["frequency_hz"].as_f64().unwrap() > 0.0);
         assert!(m["damping_ratio"].as_f64().unwrap() > 0.0);
         let shape = m["shape"].as_object().unwrap();
-        assert_eq!(shape.keys().collect::<Vec<_>>(), ["engine", "coupling_es", "middle_flange"]);
-        let peak = shape.values().map(|x| x.as_f64().unwrap().abs()).fold(0.0, f64::max);
-        assert!((peak - 1.0).abs() < 1e-12, "shapes scaled to a largest magnitude of 1");
+        assert_eq!(
+            shape.keys().collect::<Vec<_>>(),
+            ["engine", "coupling_es", "middle_flange"]
+        );
+        let peak = shape
+            .values()
+            .map(|x| x.as_f64().unwrap().abs())
+            .fold(0.0, f64::max);
+        assert!(
+            (peak - 1.0).abs() < 1e-12,
+            "shapes scaled to a largest magnitude of 1"
+        );
     }
     // A free-free model lists no rigid-body mode.
     let v = json(&["modes", RUBBER, "--json"]);
@@ -46,7 +64,19 @@ fn modes_json_shape() {
 fn campbell_json_shape_and_csv() {
     let csv = std::env::temp_dir().join(format!("torsim-campbell-{}.csv", std::process::id()));
     let csv_arg = csv.display().to_string();
-    let v = json(&["campbell", RUBBER, "--from-rpm", "400", "--to-rpm", "2000", "--step-rpm", "10", "--json", "--csv", &csv_arg]);
+    let v = json(&[
+        "campbell",
+        RUBBER,
+        "--from-rpm",
+        "400",
+        "--to-rpm",
+        "2000",
+        "--step-rpm",
+        "10",
+        "--json",
+        "--csv",
+        &csv_arg,
+    ]);
     let speeds = v["speeds_rpm"].as_array().unwrap();
     assert_eq!(speeds.len(), 161);
     let modes = v["modes"].as_array().unwrap();
@@ -55,10 +85,16 @@ fn campbell_json_shape_and_csv() {
     let crossings = v["crossings"].as_array().unwrap();
     assert!(!crossings.is_empty());
     for c in crossings {
-        let (q, rpm, f) = (c["order"].as_f64().unwrap(), c["rpm"].as_f64().unwrap(), c["frequency_hz"].as_f64().unwrap());
+        let (q, rpm, f) = (
+            c["order"].as_f64().unwrap(),
+            c["rpm"].as_f64().unwrap(),
+            c["frequency_hz"].as_f64().unwrap(),
+        );
         assert!((q * rpm / 60.0 - f).abs() < 1e-9 * f, "on the order line");
         assert!((400.0..=2000.0).contains(&rpm));
-        let mode_f = modes[c["mode"].as_u64().unwrap() as usize - 1]["frequency_hz"][0].as_f64().unwrap();
+        let mode_f = modes[c["mode"].as_u64().unwrap() as usize - 1]["frequency_hz"][0]
+            .as_f64()
+            .unwrap();
         assert!((mode_f - f).abs() < 1e-9 * f, "on the mode");
     }
     let text = std::fs::read_to_string(&csv).unwrap();
@@ -69,33 +105,69 @@ fn campbell_json_shape_and_csv() {
 
 #[test]
 fn response_json_shape() {
-    let v = json(&["response", RUBBER, "--from-rpm", "400", "--to-rpm", "2000", "--step-rpm", "100", "--json"]);
+    let v = json(&[
+        "response",
+        RUBBER,
+        "--from-rpm",
+        "400",
+        "--to-rpm",
+        "2000",
+        "--step-rpm",
+        "100",
+        "--json",
+    ]);
     let n = v["speeds_rpm"].as_array().unwrap().len();
     assert_eq!(n, 17);
     for node in ["crank", "generator"] {
         let by_order = v["nodes"][node]["ias_amplitude_rpm"].as_object().unwrap();
         assert_eq!(by_order.keys().next().unwrap(), "0.5");
-        assert!(by_order.contains_key("1") && by_order.contains_key("1.5") && by_order.contains_key("12"));
+        assert!(
+            by_order.contains_key("1")
+                && by_order.contains_key("1.5")
+                && by_order.contains_key("12")
+        );
         assert_eq!(by_order["3"].as_array().unwrap().len(), n);
     }
     let c = &v["connections"]["crank-generator"];
     assert_eq!(c["torque_amplitude_nm"]["3"].as_array().unwrap().len(), n);
     assert_eq!(c["torque_peak_nm"].as_array().unwrap().len(), n);
     let loss = c["power_loss_w"].as_array().unwrap();
-    assert!(loss.iter().all(|p| p.as_f64().unwrap() > 0.0), "a rubber stage always loses power");
+    assert!(
+        loss.iter().all(|p| p.as_f64().unwrap() > 0.0),
+        "a rubber stage always loses power"
+    );
     // The peak over a cycle is at least the mean torque.
     let mean = c["torque_mean_nm"].as_f64().unwrap();
-    assert!(c["torque_peak_nm"].as_array().unwrap().iter().all(|p| p.as_f64().unwrap() >= mean.abs()));
+    assert!(
+        c["torque_peak_nm"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .all(|p| p.as_f64().unwrap() >= mean.abs())
+    );
 }
 
 #[test]
 fn coupling_json_shape() {
-    let v = json(&["coupling", RUBBER, "--frequency-hz", "100", "--temperature-c", "40", "--twist-deg", "1.9098593171027443", "--json"]);
+    let v = json(&[
+        "coupling",
+        RUBBER,
+        "--frequency-hz",
+        "100",
+        "--temperature-c",
+        "40",
+        "--twist-deg",
+        "1.9098593171027443",
+        "--json",
+    ]);
     let c = &v["couplings"][0];
     assert_eq!(c["name"], "crank-generator");
     // 1.909…° = 5/150 rad: x = 5 mm, so k = 28 800·1.3965·2.289·0.8032 (seed 000 eq. 13).
     let k = c["stiffness_nm_per_rad"].as_f64().unwrap();
-    assert!((k - 28_800.0 * 1.3965 * 2.289 * 0.8032).abs() < 1e-6 * k, "{k}");
+    assert!(
+        (k - 28_800.0 * 1.3965 * 2.289 * 0.8032).abs() < 1e-6 * k,
+        "{k}"
+    );
     assert!((c["psi"].as_f64().unwrap() - 0.8718).abs() < 1e-12);
     assert!((c["loss_factor"].as_f64().unwrap() - 0.8718 / std::f64::consts::TAU).abs() < 1e-12);
 }
@@ -107,16 +179,26 @@ fn check_passes_on_shipped_presets_and_fails_on_a_broken_expectation() {
     assert!(presets.len() >= 7);
     for p in presets {
         assert_eq!(p["passed"], true, "{}", p["file"]);
-        assert!(!p["checks"].as_array().unwrap().is_empty(), "{} has checks", p["file"]);
+        assert!(
+            !p["checks"].as_array().unwrap().is_empty(),
+            "{} has checks",
+            p["file"]
+        );
     }
     let broken = std::env::temp_dir().join(format!("torsim-broken-{}.toml", std::process::id()));
-    let text = std::fs::read_to_string(PathBuf::from(env!("CARGO_MANIFEST_DIR")).join(THREE_DOF)).unwrap()
+    let text = std::fs::read_to_string(PathBuf::from(env!("CARGO_MANIFEST_DIR")).join(THREE_DOF))
+        .unwrap()
         + "\n[expect]\nmode_hz = [{ mode = 1, min = 100.0, max = 120.0 }]\n";
     std::fs::write(&broken, text).unwrap();
     let out = torsim(&["check", &broken.display().to_string()]);
     assert_eq!(out.status.code(), Some(1));
     let stdout = String::from_utf8_lossy(&out.stdout);
-    assert!(stdout.contains("FAIL") && stdout.contains("mode 1 in 100 … 120 Hz") && stdout.contains("computed mode 1 at 15."), "{stdout}");
+    assert!(
+        stdout.contains("FAIL")
+            && stdout.contains("mode 1 in 100 … 120 Hz")
+            && stdout.contains("computed mode 1 at 15."),
+        "{stdout}"
+    );
     let _ = std::fs::remove_file(broken);
 }
 
@@ -131,7 +213,12 @@ fn bad_input_names_file_line_and_key_with_exit_2() {
     assert_eq!(out.status.code(), Some(2));
     let stderr = String::from_utf8_lossy(&out.stderr);
     let line = text.lines().position(|l| l.contains("-2.0e5")).unwrap() + 1;
-    assert!(stderr.contains(&bad.display().to_string()) && stderr.contains(&format!("line {line}")) && stderr.contains("stiffness"), "{stderr}");
+    assert!(
+        stderr.contains(&bad.display().to_string())
+            && stderr.contains(&format!("line {line}"))
+            && stderr.contains("stiffness"),
+        "{stderr}"
+    );
     assert!(out.stdout.is_empty());
     let _ = std::fs::remove_file(bad);
 

@@ -34,10 +34,14 @@ pressure = { crank_angle_deg = [-360, -180, -60, -20, 0, 8, 20, 40, 90, 180, 360
 /// Seed 001 eq. 3–4 written out again here, with its own table interpolation, so the test
 /// does not share code with the library: torque of one cylinder at φ from firing TDC.
 fn torque_by_hand(phi: f64, omega: f64) -> f64 {
-    let angles = [-360.0, -180.0, -60.0, -20.0, 0.0, 8.0, 20.0, 40.0, 90.0, 180.0, 360.0];
+    let angles = [
+        -360.0, -180.0, -60.0, -20.0, 0.0, 8.0, 20.0, 40.0, 90.0, 180.0, 360.0,
+    ];
     let bars = [0.0, 0.1, 4.0, 18.0, 45.0, 72.0, 60.0, 32.0, 9.0, 2.5, 0.0];
     let deg = (phi.to_degrees() + 360.0).rem_euclid(720.0) - 360.0;
-    let i = (0..angles.len() - 1).find(|&i| deg >= angles[i] && deg <= angles[i + 1]).unwrap();
+    let i = (0..angles.len() - 1)
+        .find(|&i| deg >= angles[i] && deg <= angles[i + 1])
+        .unwrap();
     let p = bars[i] + (deg - angles[i]) / (angles[i + 1] - angles[i]) * (bars[i + 1] - bars[i]);
     let (r, l, d) = (0.045, 0.14, 0.082);
     let lambda = r / l;
@@ -55,8 +59,16 @@ fn fourier_by_hand(k: usize, omega: f64) -> Complex64 {
     let mut sum = Complex64::default();
     for i in 0..=n {
         let phi = i as f64 * h;
-        let w = if i == 0 || i == n { 1.0 } else if i % 2 == 1 { 4.0 } else { 2.0 };
-        sum += w * torque_by_hand(phi, omega) * Complex64::from_polar(1.0, -(k as f64) * phi * 2.0 * PI / cycle);
+        let w = if i == 0 || i == n {
+            1.0
+        } else if i % 2 == 1 {
+            4.0
+        } else {
+            2.0
+        };
+        sum += w
+            * torque_by_hand(phi, omega)
+            * Complex64::from_polar(1.0, -(k as f64) * phi * 2.0 * PI / cycle);
     }
     let integral = sum * h / 3.0;
     integral * if k == 0 { 1.0 / cycle } else { 2.0 / cycle }
@@ -71,13 +83,19 @@ fn single_cylinder_harmonics_match_direct_integral() {
     let engine = model.engine.as_ref().unwrap();
     let spectrum = cylinder_spectrum(engine, 1.0);
     let omega = 3000.0 * 2.0 * PI / 60.0;
-    let library = |k: usize| spectrum.gas_nm[k] + spectrum.inertia_nm_per_rad2_s2[k] * (omega * omega);
+    let library =
+        |k: usize| spectrum.gas_nm[k] + spectrum.inertia_nm_per_rad2_s2[k] * (omega * omega);
     let largest = (1..=48).map(|k| library(k).norm()).fold(0.0, f64::max);
     assert!(largest > 50.0, "a real engine's harmonics: {largest}");
     for k in 0..=48 {
         let exact = fourier_by_hand(k, omega);
         let err = (library(k) - exact).norm();
-        assert!(err < 1e-4 * largest, "cycle harmonic {k} (order {}): library {} vs integral {exact} (error {err})", k as f64 / 2.0, library(k));
+        assert!(
+            err < 1e-4 * largest,
+            "cycle harmonic {k} (order {}): library {} vs integral {exact} (error {err})",
+            k as f64 / 2.0,
+            library(k)
+        );
     }
     // The mean is the gas torque's mean alone: the oscillating masses do no net work.
     assert!(spectrum.inertia_nm_per_rad2_s2[0].norm() < 1e-12);
@@ -101,9 +119,16 @@ fn even_firing_four_cylinders_cancels_odd_orders() {
         let k = (2.0 * order) as usize;
         let one = (single.gas_nm[k] + single.inertia_nm_per_rad2_s2[k] * omega * omega).norm();
         if order % 2.0 == 0.0 {
-            assert!((f[crank].norm() - 4.0 * one).abs() < 1e-9 * one, "order {order}");
+            assert!(
+                (f[crank].norm() - 4.0 * one).abs() < 1e-9 * one,
+                "order {order}"
+            );
         } else {
-            assert!(f[crank].norm() < 1e-9 * one, "order {order} should cancel: {}", f[crank].norm());
+            assert!(
+                f[crank].norm() < 1e-9 * one,
+                "order {order} should cancel: {}",
+                f[crank].norm()
+            );
         }
     }
 }

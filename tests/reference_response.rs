@@ -44,14 +44,26 @@ phase_deg = 30.0
         let w = order * n * TAU / 60.0;
         let theta = t / ((k - w * w * j).powi(2) + (w * c).powi(2)).sqrt();
         assert!(rel(r.ias_amplitude_rpm[0][0][s], w * theta * 60.0 / TAU) < 1e-12);
-        assert!(rel(r.torque_amplitude_nm[0][0][s], (k * k + w * w * c * c).sqrt() * theta) < 1e-12);
+        assert!(
+            rel(
+                r.torque_amplitude_nm[0][0][s],
+                (k * k + w * w * c * c).sqrt() * theta
+            ) < 1e-12
+        );
         assert!(rel(r.power_loss_w[0][s], 0.5 * c * w * w * theta * theta) < 1e-12);
         // One order around zero mean: the peak is the amplitude.
-        assert!(rel(r.torque_peak_nm[0][s], (k * k + w * w * c * c).sqrt() * theta) < 1e-3);
+        assert!(
+            rel(
+                r.torque_peak_nm[0][s],
+                (k * k + w * w * c * c).sqrt() * theta
+            ) < 1e-3
+        );
     }
 
     let psi = 0.9;
-    let rubber = text.replace("kind = \"shaft\"", "kind = \"rubber\"").replace(&format!("damping = {c}"), &format!("psi = {psi}"));
+    let rubber = text
+        .replace("kind = \"shaft\"", "kind = \"rubber\"")
+        .replace(&format!("damping = {c}"), &format!("psi = {psi}"));
     let model = parse_model(&rubber, "1dof-rubber.toml").unwrap();
     let system = System::new(&model, OperatingPoint::default()).unwrap();
     let excitation = Excitation::new(&model, &system, 1.0, &[order]);
@@ -62,7 +74,10 @@ phase_deg = 30.0
         let theta = t / ((k - w * w * j).powi(2) + (k * xi).powi(2)).sqrt();
         assert!(rel(r.ias_amplitude_rpm[0][0][s], w * theta * 60.0 / TAU) < 1e-12);
         let loss = psi * 0.5 * k * theta * theta * w / TAU;
-        assert!(rel(r.power_loss_w[0][s], loss) < 1e-12, "DIN 740 loss at {n} rpm");
+        assert!(
+            rel(r.power_loss_w[0][s], loss) < 1e-12,
+            "DIN 740 loss at {n} rpm"
+        );
     }
 }
 
@@ -169,16 +184,42 @@ phase_deg = 90.0
     };
     let (g, t) = (run(GEARED), run(&twin));
     for s in 0..100 {
-        assert!(rel(g.ias_amplitude_rpm[0][0][s], t.ias_amplitude_rpm[0][0][s]) < 1e-11, "crank");
-        assert!(rel(g.ias_amplitude_rpm[2][0][s], r * t.ias_amplitude_rpm[1][0][s]) < 1e-11, "coupling");
-        assert!(rel(g.ias_amplitude_rpm[3][0][s], r * t.ias_amplitude_rpm[2][0][s]) < 1e-11, "brake");
+        assert!(
+            rel(g.ias_amplitude_rpm[0][0][s], t.ias_amplitude_rpm[0][0][s]) < 1e-11,
+            "crank"
+        );
+        assert!(
+            rel(
+                g.ias_amplitude_rpm[2][0][s],
+                r * t.ias_amplitude_rpm[1][0][s]
+            ) < 1e-11,
+            "coupling"
+        );
+        assert!(
+            rel(
+                g.ias_amplitude_rpm[3][0][s],
+                r * t.ias_amplitude_rpm[2][0][s]
+            ) < 1e-11,
+            "brake"
+        );
         for c in 0..2 {
-            assert!(rel(g.torque_amplitude_nm[c][0][s], t.torque_amplitude_nm[c][0][s] / r) < 1e-11, "torque {c}");
-            assert!(rel(g.power_loss_w[c][s], t.power_loss_w[c][s]) < 1e-11, "power {c}");
+            assert!(
+                rel(
+                    g.torque_amplitude_nm[c][0][s],
+                    t.torque_amplitude_nm[c][0][s] / r
+                ) < 1e-11,
+                "torque {c}"
+            );
+            assert!(
+                rel(g.power_loss_w[c][s], t.power_loss_w[c][s]) < 1e-11,
+                "power {c}"
+            );
         }
     }
     // The resonance is really in the sweep: the response varies by more than 10×.
     let a = &g.ias_amplitude_rpm[2][0];
-    let (lo, hi) = a.iter().fold((f64::MAX, 0.0_f64), |(l, h), &v| (l.min(v), h.max(v)));
+    let (lo, hi) = a
+        .iter()
+        .fold((f64::MAX, 0.0_f64), |(l, h), &v| (l.min(v), h.max(v)));
     assert!(hi > 10.0 * lo, "{lo} … {hi}");
 }

@@ -10,7 +10,12 @@ use torsim::physics::engine::mean_torque_per_cylinder_nm;
 use torsim::physics::{OperatingPoint, System};
 
 fn elements() -> RubberElements {
-    RubberElements { count: 8, per_side: 4, pitch_diameter_m: 0.30, radial_stiffness_n_per_m: 6.4e5 }
+    RubberElements {
+        count: 8,
+        per_side: 4,
+        pitch_diameter_m: 0.30,
+        radial_stiffness_n_per_m: 6.4e5,
+    }
 }
 
 /// eq. 12: c_Tstat = 6.4e5 · 0.15² · 4·4/8 = 28 800 N·m/rad.
@@ -24,19 +29,34 @@ fn elements() -> RubberElements {
 #[test]
 fn law_against_hand_numbers() {
     let stage = seed000_stage(elements(), 1.0, 40.0);
-    assert_rel(stage.static_stiffness_nm_per_rad(), 28_800.0, 1e-15, "eq. 12");
+    assert_rel(
+        stage.static_stiffness_nm_per_rad(),
+        28_800.0,
+        1e-15,
+        "eq. 12",
+    );
     let s = stage.state(Some(100.0), 40.0, 5.0 / 150.0);
     assert_rel(s.alpha_x, 1.3965, 1e-14, "α_x");
     assert_rel(s.alpha_x_tangent, 2.173, 1e-14, "tangent");
     assert_rel(s.alpha_f, 2.289, 1e-14, "α_f");
     assert_rel(s.alpha_tc, 0.8032, 1e-13, "α_Tc");
     assert_rel(s.alpha_txi, 0.8718, 1e-13, "α_Tξ");
-    assert_rel(s.stiffness_nm_per_rad, 28_800.0 * 1.3965 * 2.289 * 0.8032, 1e-13, "eq. 13");
+    assert_rel(
+        s.stiffness_nm_per_rad,
+        28_800.0 * 1.3965 * 2.289 * 0.8032,
+        1e-13,
+        "eq. 13",
+    );
     assert_rel(s.loss_factor, 1.0 / TAU * 0.8718, 1e-13, "eq. 15");
     assert!(s.warnings.is_empty());
     // Beyond the measured 300 Hz, α_f is held at its end value and a warning is raised.
     let held = stage.state(Some(500.0), 40.0, 0.0);
-    assert_rel(held.alpha_f, -0.000023 * 9.0e4 + 0.01519 * 300.0 + 1.0, 1e-14, "held α_f");
+    assert_rel(
+        held.alpha_f,
+        -0.000023 * 9.0e4 + 0.01519 * 300.0 + 1.0,
+        1e-14,
+        "held α_f",
+    );
     assert_eq!(held.warnings.len(), 1);
 }
 
@@ -64,14 +84,32 @@ fn static_twist_and_tangent_stiffness_under_mean_torque() {
     let torque = 6.0 * mean_torque_per_cylinder_nm(engine, 1.0);
     assert!(torque > 500.0, "a real mean torque: {torque}");
     let system = System::new(&m, OperatingPoint::default()).unwrap();
-    assert_rel(system.mean_torque_nm[0].unwrap(), torque, 1e-12, "mean torque through the coupling");
+    assert_rel(
+        system.mean_torque_nm[0].unwrap(),
+        torque,
+        1e-12,
+        "mean torque through the coupling",
+    );
     let twist = system.static_twist_rad[0].unwrap();
     let s = stage.state(None, 40.0, twist);
-    assert_rel(s.stiffness_nm_per_rad * twist, torque, 1e-12, "secant law carries the torque");
+    assert_rel(
+        s.stiffness_nm_per_rad * twist,
+        torque,
+        1e-12,
+        "secant law carries the torque",
+    );
     let x = twist * 150.0;
     let k_tan = 28_800.0 * s.alpha_tc * (3.0 * 0.0152 * x * x + 2.0 * 0.0033 * x + 1.0);
     let f = modes(&system).unwrap()[0].frequency_hz;
     // reciprocating_mass is 0 here, so the crank keeps its own inertia.
-    assert_rel(f, (k_tan * (1.0 / j1 + 1.0 / j2)).sqrt() / TAU, 1e-12, "tangent mode");
-    assert!(k_tan > 1.5 * 28_800.0 * s.alpha_tc, "the twist stiffens the stage noticeably");
+    assert_rel(
+        f,
+        (k_tan * (1.0 / j1 + 1.0 / j2)).sqrt() / TAU,
+        1e-12,
+        "tangent mode",
+    );
+    assert!(
+        k_tan > 1.5 * 28_800.0 * s.alpha_tc,
+        "the twist stiffens the stage noticeably"
+    );
 }

@@ -3,9 +3,11 @@
 //! ([`validate`], [`error`]), the gear tree ([`graph`]), the rubber coupling law of
 //! seed 000 ([`rubber`]) and the presets shipped in the binary ([`presets`]).
 
+pub mod engine_types;
 pub mod error;
 pub mod graph;
 mod key_lines;
+pub mod operation_types;
 pub mod presets;
 pub mod read;
 mod read_sections;
@@ -16,7 +18,9 @@ pub mod validate;
 mod validate_engine;
 pub mod write;
 
+pub use engine_types::*;
 pub use error::ModelError;
+pub use operation_types::*;
 pub use read::{parse_model, read_model_file};
 pub use types::*;
 pub use validate::validate;

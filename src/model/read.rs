@@ -12,7 +12,7 @@ use toml_edit::Document;
 use super::key_lines::{KeyLines, Lines};
 use super::read_sections::{engine, expect, harmonic, load, operation};
 use super::spanned::Tab;
-use super::types::{
+use super::{
     Connection, ConnectionKind, Expect, Gear, Inertia, Model, Operation, Poly, RubberElements,
     RubberStage, RubberStiffness, Shaft, Thermal,
 };

@@ -3,7 +3,7 @@
 
 use super::error::ModelError;
 use super::spanned::{Tab, wrong_type};
-use super::types::{
+use super::{
     CriticalExpectation, Engine, Expect, Harmonic, HarmonicAmplitude, Load, LoadPressure,
     ModeExpectation, Operation, Pressure, PressureCurve,
 };

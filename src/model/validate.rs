@@ -8,8 +8,8 @@ use std::collections::HashSet;
 
 use super::error::ModelError;
 use super::graph;
-use super::types::{ConnectionKind, GROUND, Model, Poly, RubberStage, RubberStiffness};
 use super::validate_engine;
+use super::{ConnectionKind, GROUND, Model, Poly, RubberStage, RubberStiffness};
 
 /// Result of one check.
 pub(crate) type Check = Result<(), ModelError>;

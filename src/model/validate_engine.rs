@@ -1,8 +1,8 @@
 //! Semantic checks of the excitation (`[engine]`, `[[harmonic]]`), `[operation]` and
 //! `[expect]`; part of [`validate`](super::validate::validate).
 
-use super::types::{Engine, HarmonicAmplitude, Model, Pressure, PressureCurve};
 use super::validate::{Check, fail, finite, increasing, known_node, non_negative, positive, range};
+use super::{Engine, HarmonicAmplitude, Model, Pressure, PressureCurve};
 
 /// `[engine]`.
 pub(crate) fn engine(model: &Model, e: &Engine) -> Check {

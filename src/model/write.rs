@@ -6,7 +6,7 @@
 use std::io::Write;
 use std::path::Path;
 
-use super::types::{
+use super::{
     Connection, ConnectionKind, Engine, Expect, Harmonic, HarmonicAmplitude, Model, Operation,
     Poly, Pressure, PressureCurve, RubberStage, RubberStiffness,
 };

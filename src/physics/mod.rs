@@ -3,13 +3,16 @@
 //! twist of the rubber stages under the mean torque ([`static_twist`]); the engine torque
 //! of seed 001 eq. 3–5 and its harmonics per order ([`engine`], [`excitation`]).
 
+pub mod element;
 pub mod engine;
 pub mod error;
 pub mod excitation;
 pub mod matrices;
 pub mod static_twist;
 pub mod system;
+mod topology;
 
+pub use element::{Element, ElementLaw};
 pub use error::PhysicsError;
 pub use excitation::Excitation;
-pub use system::{Element, ElementLaw, OperatingPoint, System};
+pub use system::{OperatingPoint, System};

@@ -7,9 +7,11 @@
 //! degree of freedom; a gear with mesh stiffness `k_m` (given at the `to` side) is a spring
 //! `k_m·r_to²` between them.
 
+use super::element::{Element, ElementLaw, rubber_law};
 use super::error::PhysicsError;
 use super::static_twist::static_connection_torques;
-use crate::model::{ConnectionKind, GROUND, Model, Poly, RubberStage, graph};
+use super::topology::{free_components, merge_rigid_gears};
+use crate::model::{ConnectionKind, GROUND, Model, graph};
 
 /// Where the linear analyses are evaluated.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -27,89 +29,6 @@ impl Default for OperatingPoint {
             load: 1.0,
             temperature_c: None,
         }
-    }
-}
-
-/// How an element's stiffness behaves.
-#[derive(Debug, Clone, PartialEq)]
-pub enum ElementLaw {
-    /// A shaft or a gear mesh: constant stiffness and viscous damping (referred).
-    Linear {
-        /// Referred stiffness, N·m/rad.
-        stiffness_nm_per_rad: f64,
-        /// Referred viscous damping, N·m·s/rad.
-        damping_nm_s_per_rad: f64,
-    },
-    /// A rubber stage linearized at its static twist: `k(f) = k_base·α_f(f)`, hysteretic
-    /// with loss factor `ξ_T` (seed 000 eq. 13, 15).
-    Rubber {
-        /// Referred tangent stiffness without α_f, N·m/rad: `c_Tstat·dα_x x/dx·α_Tc·r²`.
-        base_stiffness_nm_per_rad: f64,
-        /// α_f(f) (seed 000 eq. 9); `None`: no frequency dependence.
-        frequency_poly: Option<Poly>,
-        /// Loss factor `ξ_T = ψ/2π·α_Tξ`.
-        loss_factor: f64,
-    },
-}
-
-/// A spring (and damper) between two degrees of freedom, or one and the frame.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Element {
-    /// Index of the model connection.
-    pub connection: usize,
-    /// DOF at the `from` end (`None`: ground).
-    pub from_dof: Option<usize>,
-    /// DOF at the `to` end (`None`: ground).
-    pub to_dof: Option<usize>,
-    /// |Speed ratio| of the shaft the connection's torque is given in (its own shaft;
-    /// the `to` side for gears). Own-shaft torque = referred torque / this.
-    pub torque_ratio: f64,
-    /// Stiffness law.
-    pub law: ElementLaw,
-}
-
-impl Element {
-    /// Referred stiffness at vibration frequency `frequency_hz`, N·m/rad, and the loss
-    /// factor (zero for linear elements).
-    pub fn stiffness_at(&self, frequency_hz: f64) -> (f64, f64) {
-        match &self.law {
-            ElementLaw::Linear {
-                stiffness_nm_per_rad,
-                ..
-            } => (*stiffness_nm_per_rad, 0.0),
-            ElementLaw::Rubber {
-                base_stiffness_nm_per_rad,
-                frequency_poly,
-                loss_factor,
-            } => {
-                let alpha_f = frequency_poly
-                    .as_ref()
-                    .map_or(1.0, |p| p.eval(frequency_hz));
-                (base_stiffness_nm_per_rad * alpha_f, *loss_factor)
-            }
-        }
-    }
-
-    /// Referred viscous damping, N·m·s/rad (zero for rubber: it is hysteretic).
-    pub fn viscous_damping(&self) -> f64 {
-        match &self.law {
-            ElementLaw::Linear {
-                damping_nm_s_per_rad,
-                ..
-            } => *damping_nm_s_per_rad,
-            ElementLaw::Rubber { .. } => 0.0,
-        }
-    }
-
-    /// True when the stiffness depends on frequency.
-    pub fn is_frequency_dependent(&self) -> bool {
-        matches!(
-            &self.law,
-            ElementLaw::Rubber {
-                frequency_poly: Some(_),
-                ..
-            }
-        )
     }
 }
 
@@ -318,110 +237,4 @@ impl System {
         }
         Ok(system)
     }
-}
-
-/// The rubber law linearized at the static twist that `torque_nm` (own shaft) puts on it.
-fn rubber_law(
-    stage: &RubberStage,
-    name: &str,
-    torque_nm: f64,
-    temperature_c: f64,
-    r2: f64,
-    warnings: &mut Vec<String>,
-) -> Result<(ElementLaw, f64), PhysicsError> {
-    let twist = stage
-        .static_twist_rad(torque_nm, temperature_c)
-        .ok_or_else(|| PhysicsError::Twist {
-            connection: name.to_string(),
-            torque_nm,
-        })?;
-    let state = stage.state(None, temperature_c, twist);
-    for w in &state.warnings {
-        warnings.push(format!(
-            "rubber stage `{name}`: {} evaluated at {:.4}, outside its range [{}, {}]; held at the end value",
-            w.factor.key(), w.argument, w.range[0], w.range[1]
-        ));
-    }
-    for (value, key) in [
-        (state.alpha_tc, "temperature_stiffness_poly"),
-        (state.alpha_txi, "temperature_damping_poly"),
-        (state.alpha_x_tangent, "amplitude_poly"),
-    ] {
-        if value.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
-            return Err(PhysicsError::Factor {
-                connection: name.to_string(),
-                key,
-                value,
-            });
-        }
-    }
-    Ok((
-        ElementLaw::Rubber {
-            base_stiffness_nm_per_rad: state.tangent_stiffness_nm_per_rad * r2,
-            frequency_poly: stage.frequency_poly.clone(),
-            loss_factor: state.loss_factor,
-        },
-        twist,
-    ))
-}
-
-/// DOF index of every node: nodes joined by rigid gears share one (union-find).
-fn merge_rigid_gears(model: &Model) -> Vec<usize> {
-    let n = model.inertias.len();
-    let mut parent: Vec<usize> = (0..n).collect();
-    fn root(parent: &mut [usize], mut i: usize) -> usize {
-        while parent[i] != i {
-            parent[i] = parent[parent[i]];
-            i = parent[i];
-        }
-        i
-    }
-    for c in &model.connections {
-        if let ConnectionKind::Gear(g) = &c.kind
-            && g.mesh_stiffness_nm_per_rad.is_none()
-            && let (Some(a), Some(b)) = (model.node_index(&c.from), model.node_index(&c.to))
-        {
-            let (ra, rb) = (root(&mut parent, a), root(&mut parent, b));
-            parent[ra.max(rb)] = ra.min(rb);
-        }
-    }
-    let mut dof_of_root = vec![usize::MAX; n];
-    let mut next = 0;
-    (0..n)
-        .map(|i| {
-            let r = root(&mut parent, i);
-            if dof_of_root[r] == usize::MAX {
-                dof_of_root[r] = next;
-                next += 1;
-            }
-            dof_of_root[r]
-        })
-        .collect()
-}
-
-/// Number of connected components of the DOF graph that no element ties to ground: each
-/// is one rigid-body mode.
-fn free_components(n_dof: usize, elements: &[Element]) -> usize {
-    let mut parent: Vec<usize> = (0..=n_dof).collect(); // index n_dof is ground
-    fn root(parent: &mut [usize], mut i: usize) -> usize {
-        while parent[i] != i {
-            parent[i] = parent[parent[i]];
-            i = parent[i];
-        }
-        i
-    }
-    for e in elements {
-        let a = e.from_dof.unwrap_or(n_dof);
-        let b = e.to_dof.unwrap_or(n_dof);
-        let (ra, rb) = (root(&mut parent, a), root(&mut parent, b));
-        parent[ra.max(rb)] = ra.min(rb);
-    }
-    let ground = root(&mut parent, n_dof);
-    let mut roots: Vec<usize> = (0..n_dof)
-        .map(|i| root(&mut parent, i))
-        .filter(|&r| r != ground)
-        .collect();
-    roots.sort_unstable();
-    roots.dedup();
-    roots.len()
 }
