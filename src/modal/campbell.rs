@@ -39,7 +39,8 @@ pub struct Campbell {
 
 /// Speeds from `from_rpm` to `to_rpm` in steps of `step_rpm` (the last one included).
 pub fn speed_grid(from_rpm: f64, to_rpm: f64, step_rpm: f64) -> Vec<f64> {
-    if !(step_rpm > 0.0) || !(to_rpm >= from_rpm) {
+    let valid = step_rpm > 0.0 && to_rpm >= from_rpm;
+    if !valid {
         return vec![from_rpm];
     }
     let count = ((to_rpm - from_rpm) / step_rpm + 1e-9).floor() as usize;

@@ -89,6 +89,21 @@ pub fn cylinder_spectrum(engine: &Engine, load: f64) -> CylinderSpectrum {
     }
 }
 
+/// A `[[harmonic]]` whose amplitude is a table over speed.
+#[derive(Debug, Clone, PartialEq)]
+struct TabledHarmonic {
+    /// Index into [`Excitation::orders`].
+    order_index: usize,
+    /// DOF it acts on.
+    dof: usize,
+    /// Referral ratio times `e^{i·phase}`.
+    phase: Complex64,
+    /// Reference speeds, rpm.
+    speed_rpm: Vec<f64>,
+    /// Amplitudes, N·m in the node's own shaft.
+    amplitude_nm: Vec<f64>,
+}
+
 /// Forcing per order on every DOF, ready for a speed sweep.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Excitation {
@@ -98,8 +113,8 @@ pub struct Excitation {
     constant: Vec<Vec<Complex64>>,
     /// Part per (crank rad/s)² per order and DOF (oscillating masses), referred.
     per_speed2: Vec<Vec<Complex64>>,
-    /// Harmonics whose amplitude varies with speed: (order index, DOF, referral·e^{iφ}, rpm, N·m).
-    tabled: Vec<(usize, usize, Complex64, Vec<f64>, Vec<f64>)>,
+    /// Harmonics whose amplitude varies with speed.
+    tabled: Vec<TabledHarmonic>,
     /// Mean engine torque per DOF, N·m referred.
     pub mean_nm: Vec<f64>,
 }
@@ -153,11 +168,13 @@ impl Excitation {
                 HarmonicAmplitude::BySpeed {
                     speed_rpm,
                     amplitude_nm,
-                } => {
-                    excitation
-                        .tabled
-                        .push((q, dof, phase, speed_rpm.clone(), amplitude_nm.clone()))
-                }
+                } => excitation.tabled.push(TabledHarmonic {
+                    order_index: q,
+                    dof,
+                    phase,
+                    speed_rpm: speed_rpm.clone(),
+                    amplitude_nm: amplitude_nm.clone(),
+                }),
             }
         }
         excitation
@@ -174,10 +191,8 @@ impl Excitation {
         {
             *o = c + s * (omega * omega);
         }
-        for (q, dof, phase, rpm, nm) in &self.tabled {
-            if *q == order_index {
-                out[*dof] += phase * interpolate_held(rpm, nm, speed_rpm);
-            }
+        for t in self.tabled.iter().filter(|t| t.order_index == order_index) {
+            out[t.dof] += t.phase * interpolate_held(&t.speed_rpm, &t.amplitude_nm, speed_rpm);
         }
     }
 }
