@@ -223,3 +223,64 @@ phase_deg = 90.0
         .fold((f64::MAX, 0.0_f64), |(l, h), &v| (l.min(v), h.max(v)));
     assert!(hi > 10.0 * lo, "{lo} … {hi}");
 }
+
+/// A harmonic whose amplitude is a table over speed is interpolated linearly and held
+/// beyond the ends: 10 N·m at 1000 rpm, 30 N·m at 2000 rpm → 20 N·m at 1500 rpm.
+#[test]
+fn harmonic_amplitude_table_over_speed() {
+    let text = r#"format = 1
+name = "tabled"
+[[inertia]]
+name = "a"
+inertia = 0.5
+[[connection]]
+kind = "shaft"
+from = "a"
+to = "ground"
+stiffness = 1.0e4
+[[harmonic]]
+at = "a"
+order = 1.0
+amplitude = { rpm = [1000.0, 2000.0], nm = [10.0, 30.0] }
+"#;
+    let model = parse_model(text, "tabled.toml").unwrap();
+    let system = System::new(&model, OperatingPoint::default()).unwrap();
+    let excitation = Excitation::new(&model, &system, 1.0, &[1.0]);
+    let speeds = [500.0, 1500.0, 2500.0];
+    let r = forced_response(&system, &excitation, &speeds).unwrap();
+    for (s, (&n, t)) in speeds.iter().zip([10.0, 20.0, 30.0]).enumerate() {
+        let w = n * TAU / 60.0;
+        let expected = (1.0e4 * t / (1.0e4 - w * w * 0.5)).abs();
+        assert!(rel(r.torque_amplitude_nm[0][0][s], expected) < 1e-12, "{n} rpm");
+    }
+}
+
+/// Seed 000's α_f without a measured range turns negative above ~720 Hz: a sweep that
+/// reaches there stops with an error naming the stage, rather than computing nonsense.
+#[test]
+fn negative_frequency_factor_is_an_error() {
+    let text = r#"format = 1
+name = "alpha_f"
+[[inertia]]
+name = "a"
+inertia = 0.5
+[[connection]]
+kind = "rubber"
+name = "coupling"
+from = "a"
+to = "ground"
+stiffness = 1.0e4
+psi = 1.0
+frequency_poly = [-0.000023, 0.01519, 1.0]
+[[harmonic]]
+at = "a"
+order = 24.0
+amplitude = 10.0
+"#;
+    let model = parse_model(text, "alpha.toml").unwrap();
+    let system = System::new(&model, OperatingPoint::default()).unwrap();
+    let excitation = Excitation::new(&model, &system, 1.0, &[24.0]);
+    let err = forced_response(&system, &excitation, &[1000.0, 2000.0]).unwrap_err();
+    let message = err.to_string();
+    assert!(message.contains("coupling") && message.contains("800.0 Hz"), "{message}");
+}
