@@ -232,3 +232,29 @@ fn bad_input_names_file_line_and_key_with_exit_2() {
     let out = torsim(&["modes", "preset:nonexistent"]);
     assert_eq!(out.status.code(), Some(2));
 }
+
+/// Regression: output piped into a reader that has gone (`| head`) ended in a panic.
+#[test]
+fn closed_stdout_is_not_a_panic() {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_torsim"))
+        .args(["response", "preset:cng-genset"])
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    drop(child.stdout.take());
+    let out = child.wait_with_output().unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(!stderr.contains("panicked"), "{stderr}");
+    assert!(out.status.success(), "{stderr}");
+}
+
+/// Regression: modes above a rubber stage's measured frequency range were computed with
+/// α_f held at its end value without a word.
+#[test]
+fn frequency_beyond_measured_range_warns() {
+    let out = torsim(&["modes", "preset:cng-genset"]);
+    assert!(out.status.success());
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(stderr.contains("warning: rubber stage `coupling`") && stderr.contains("held at its end value"), "{stderr}");
+}

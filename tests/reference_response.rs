@@ -251,7 +251,10 @@ amplitude = { rpm = [1000.0, 2000.0], nm = [10.0, 30.0] }
     for (s, (&n, t)) in speeds.iter().zip([10.0, 20.0, 30.0]).enumerate() {
         let w = n * TAU / 60.0;
         let expected = (1.0e4 * t / (1.0e4 - w * w * 0.5)).abs();
-        assert!(rel(r.torque_amplitude_nm[0][0][s], expected) < 1e-12, "{n} rpm");
+        assert!(
+            rel(r.torque_amplitude_nm[0][0][s], expected) < 1e-12,
+            "{n} rpm"
+        );
     }
 }
 
@@ -282,5 +285,8 @@ amplitude = 10.0
     let excitation = Excitation::new(&model, &system, 1.0, &[24.0]);
     let err = forced_response(&system, &excitation, &[1000.0, 2000.0]).unwrap_err();
     let message = err.to_string();
-    assert!(message.contains("coupling") && message.contains("800.0 Hz"), "{message}");
+    assert!(
+        message.contains("coupling") && message.contains("800.0 Hz"),
+        "{message}"
+    );
 }

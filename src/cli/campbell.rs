@@ -1,7 +1,7 @@
 //! `torsim campbell MODEL [--from-rpm A --to-rpm B --step-rpm S] [--csv FILE]`.
 
 use super::error::CliError;
-use super::format::{number, numbers, order_key, print_json, print_table, print_warnings};
+use super::format::{emit, number, numbers, order_key, outln, print_json, print_warnings, table};
 use super::input::{check_load, load_model, speed_grid};
 use serde_json::{Value, json};
 use std::io::Write;
@@ -40,6 +40,8 @@ pub fn run(o: Options) -> Result<(), CliError> {
     print_warnings(&system.warnings);
     let orders = model.orders();
     let diagram = campbell(&system, &speeds, &orders)?;
+    let frequencies: Vec<f64> = diagram.modes.iter().map(|m| m.frequency_hz).collect();
+    print_warnings(&system.frequency_range_warnings(&frequencies));
     let operating = model.operation.operating_range_rpm;
     let in_operating = |rpm: f64| operating.is_some_and(|[lo, hi]| rpm >= lo && rpm <= hi);
     if let Some(path) = o.csv {
@@ -73,14 +75,17 @@ pub fn run(o: Options) -> Result<(), CliError> {
             "crossings": crossings,
         }));
     }
-    println!(
+    let mut text = String::new();
+    outln!(
+        text,
         "{}: modes (Hz) — constant over speed in the linear model",
         model.name
     );
     for (i, m) in diagram.modes.iter().enumerate() {
-        println!("  mode {}: {:.3} Hz", i + 1, m.frequency_hz);
+        outln!(text, "  mode {}: {:.3} Hz", i + 1, m.frequency_hz);
     }
-    println!(
+    outln!(
+        text,
         "crossings {} … {} rpm:",
         speeds[0],
         speeds[speeds.len() - 1]
@@ -102,11 +107,11 @@ pub fn run(o: Options) -> Result<(), CliError> {
             ]
         })
         .collect();
-    print_table(
+    text += &table(
         &["order", "mode", "rpm", "f [Hz]", ""].map(String::from),
         &rows,
     );
-    Ok(())
+    emit(&text)
 }
 
 /// Writes the diagram: one row per speed, each mode's frequency and each order line.

@@ -1,7 +1,7 @@
 //! `torsim check [PRESET…]`: runs every `[expect]` block; exit 1 when one fails.
 
 use super::error::CliError;
-use super::format::print_json;
+use super::format::{emit, outln, print_json};
 use super::input::load_model;
 use serde_json::json;
 use std::path::Path;
@@ -35,6 +35,7 @@ fn targets(named: &[String]) -> Result<Vec<String>, CliError> {
 /// Runs the command.
 pub fn run(named: &[String], json: bool) -> Result<(), CliError> {
     let mut all_passed = true;
+    let mut text = String::new();
     let mut reports = Vec::new();
     for file in targets(named)? {
         let model = load_model(&file)?;
@@ -42,20 +43,24 @@ pub fn run(named: &[String], json: bool) -> Result<(), CliError> {
         let passed = outcomes.iter().all(|o| o.passed);
         all_passed &= passed;
         if !json {
-            println!(
+            outln!(
+                text,
                 "{} {file} ({} checks)",
                 if passed { "PASS" } else { "FAIL" },
                 outcomes.len()
             );
             for o in &outcomes {
                 let mark = if o.passed { "ok  " } else { "FAIL" };
-                println!(
+                outln!(
+                    text,
                     "  {mark} {}: expected {}; computed {}",
-                    o.kind, o.expected, o.computed
+                    o.kind,
+                    o.expected,
+                    o.computed
                 );
             }
             if outcomes.is_empty() {
-                println!("  (no [expect] checks)");
+                outln!(text, "  (no [expect] checks)");
             }
         }
         let checks: Vec<_> = outcomes
@@ -66,6 +71,8 @@ pub fn run(named: &[String], json: bool) -> Result<(), CliError> {
     }
     if json {
         print_json(&json!({ "presets": reports }))?;
+    } else {
+        emit(&text)?;
     }
     if all_passed {
         Ok(())

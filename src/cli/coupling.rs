@@ -2,7 +2,7 @@
 //! rubber stage's dynamic stiffness and damping by the seed 000 law (a calculator).
 
 use super::error::CliError;
-use super::format::{number, print_json, print_table};
+use super::format::{emit, number, outln, print_json, table};
 use super::input::load_model;
 use serde_json::json;
 use torsim::model::ConnectionKind;
@@ -82,11 +82,13 @@ pub fn run(
     if json {
         return print_json(&json!({ "couplings": list }));
     }
+    let mut text = String::new();
     if rows.is_empty() {
-        println!("{}: no rubber stages", model.name);
-        return Ok(());
+        outln!(text, "{}: no rubber stages", model.name);
+        return emit(&text);
     }
-    println!(
+    outln!(
+        text,
         "{} — seed 000 law at {}, twist {twist_deg}°",
         model.name,
         frequency_hz.map_or("static (α_f = 1)".into(), |f| format!("{f} Hz"))
@@ -103,6 +105,6 @@ pub fn run(
         "α_Tξ",
         "b_T [N·m·s/rad]",
     ];
-    print_table(&header.map(String::from), &rows);
-    Ok(())
+    text += &table(&header.map(String::from), &rows);
+    emit(&text)
 }

@@ -2,17 +2,27 @@
 
 use super::error::CliError;
 use serde_json::Value;
+use std::io::Write;
 
 /// An order as a JSON key: `"0.5"`, `"1"`, `"1.5"` (`spec/cli.md`).
 pub fn order_key(order: f64) -> String {
     format!("{order}")
 }
 
+/// Writes `text` to stdout at once. A reader that closed the pipe early (`| head`) is
+/// not an error: the output is simply no longer wanted.
+pub fn emit(text: &str) -> Result<(), CliError> {
+    let mut out = std::io::stdout().lock();
+    match out.write_all(text.as_bytes()).and_then(|()| out.flush()) {
+        Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => Err(CliError::failed(e)),
+        _ => Ok(()),
+    }
+}
+
 /// Prints one JSON document on stdout; refuses non-finite numbers (JSON has none).
 pub fn print_json(value: &Value) -> Result<(), CliError> {
     let text = serde_json::to_string_pretty(value).map_err(CliError::failed)?;
-    println!("{text}");
-    Ok(())
+    emit(&(text + "\n"))
 }
 
 /// A finite number as JSON, or an error naming what it was.
@@ -31,8 +41,8 @@ pub fn numbers(values: &[f64], what: &str) -> Result<Value, CliError> {
         .map(Value::Array)
 }
 
-/// Prints a table: a header row and rows, columns padded to their widest cell.
-pub fn print_table(header: &[String], rows: &[Vec<String>]) {
+/// A table as text: a header row and rows, columns padded to their widest cell.
+pub fn table(header: &[String], rows: &[Vec<String>]) -> String {
     let mut widths: Vec<usize> = header.iter().map(|h| h.chars().count()).collect();
     for row in rows {
         for (w, cell) in widths.iter_mut().zip(row) {
@@ -47,10 +57,12 @@ pub fn print_table(header: &[String], rows: &[Vec<String>]) {
             .collect::<Vec<_>>()
             .join("  ")
     };
-    println!("{}", line(header));
+    let mut text = line(header).trim_end().to_string() + "\n";
     for row in rows {
-        println!("{}", line(row));
+        text += line(row).trim_end();
+        text.push('\n');
     }
+    text
 }
 
 /// Prints the library's warnings on stderr.
@@ -59,3 +71,15 @@ pub fn print_warnings(warnings: &[String]) {
         eprintln!("warning: {w}");
     }
 }
+
+/// Appends one formatted line to a `String` (writing to a `String` cannot fail).
+macro_rules! outln {
+    ($buf:expr) => {
+        $buf.push('\n')
+    };
+    ($buf:expr, $($arg:tt)*) => {{
+        use std::fmt::Write as _;
+        let _ = writeln!($buf, $($arg)*);
+    }};
+}
+pub(crate) use outln;

@@ -129,7 +129,6 @@ pub fn run(cli: Cli) -> Result<(), CliError> {
                 "torsim: the GUI is not part of this build yet; showing the model's modes and Campbell crossings."
             );
             modes::run(&model, None, 1.0, false)?;
-            println!();
             campbell::run(campbell::Options {
                 model: &model,
                 from_rpm: None,

@@ -2,7 +2,7 @@
 //! frequencies, damping ratios and mode shapes.
 
 use super::error::CliError;
-use super::format::{number, print_json, print_table, print_warnings};
+use super::format::{emit, number, outln, print_json, print_warnings, table};
 use super::input::{check_load, load_model};
 use serde_json::{Map, json};
 use torsim::modal::{damped_modes, modes};
@@ -19,6 +19,8 @@ pub fn run(model_arg: &str, speed_rpm: Option<f64>, load: f64, json: bool) -> Re
     print_warnings(&system.warnings);
     let modes = modes(&system)?;
     let damped = damped_modes(&system, &modes);
+    let frequencies: Vec<f64> = modes.iter().map(|m| m.frequency_hz).collect();
+    print_warnings(&system.frequency_range_warnings(&frequencies));
     if json {
         let mut list = Vec::new();
         for (i, (m, d)) in modes.iter().zip(&damped).enumerate() {
@@ -42,7 +44,9 @@ pub fn run(model_arg: &str, speed_rpm: Option<f64>, load: f64, json: bool) -> Re
             "modes": list,
         }));
     }
-    println!(
+    let mut text = String::new();
+    outln!(
+        text,
         "{} — {} flexible modes ({} rigid-body mode(s) not listed), load {}",
         model.name,
         modes.len(),
@@ -68,6 +72,6 @@ pub fn run(model_arg: &str, speed_rpm: Option<f64>, load: f64, json: bool) -> Re
             row
         })
         .collect();
-    print_table(&header, &rows);
-    Ok(())
+    text += &table(&header, &rows);
+    emit(&text)
 }

@@ -2,7 +2,7 @@
 //! forced response order by order (frequency domain).
 
 use super::error::CliError;
-use super::format::{numbers, order_key, print_json, print_table, print_warnings};
+use super::format::{emit, numbers, order_key, outln, print_json, print_warnings, table};
 use super::input::{check_load, load_model, speed_grid};
 use serde_json::{Map, Value, json};
 use torsim::physics::{Excitation, OperatingPoint, System};
@@ -50,6 +50,11 @@ pub fn run(o: Options) -> Result<(), CliError> {
     }
     let excitation = Excitation::new(&model, &system, load, &orders);
     let r = forced_response(&system, &excitation, &speeds)?;
+    let excited_hz: Vec<f64> = speeds
+        .iter()
+        .flat_map(|n| orders.iter().map(move |q| q * n / 60.0))
+        .collect();
+    print_warnings(&system.frequency_range_warnings(&excited_hz));
     if o.json {
         let mut nodes = Map::new();
         for (name, per_order) in system.node_names.iter().zip(&r.ias_amplitude_rpm) {
@@ -83,7 +88,9 @@ pub fn run(o: Options) -> Result<(), CliError> {
             "connections": Value::Object(connections),
         }));
     }
-    println!(
+    let mut text = String::new();
+    outln!(
+        text,
         "{} — forced response at load {load}, orders {} … {}; IAS: largest order amplitude [rpm] (order)",
         model.name,
         order_key(orders[0]),
@@ -115,6 +122,6 @@ pub fn run(o: Options) -> Result<(), CliError> {
             row
         })
         .collect();
-    print_table(&header, &rows);
-    Ok(())
+    text += &table(&header, &rows);
+    emit(&text)
 }

@@ -96,6 +96,38 @@ impl System {
         Ok(())
     }
 
+    /// Warnings for rubber stages whose α_f is held at an end of its measured range for
+    /// some of `frequencies_hz` (one line per stage, for a person).
+    pub fn frequency_range_warnings(&self, frequencies_hz: &[f64]) -> Vec<String> {
+        let mut out = Vec::new();
+        for e in &self.elements {
+            if let ElementLaw::Rubber {
+                frequency_poly: Some(p),
+                ..
+            } = &e.law
+                && let Some([lo, hi]) = p.range
+            {
+                let outside: Vec<f64> = frequencies_hz
+                    .iter()
+                    .copied()
+                    .filter(|f| *f < lo || *f > hi)
+                    .collect();
+                if let (Some(min), Some(max)) = (
+                    outside.iter().copied().reduce(f64::min),
+                    outside.iter().copied().reduce(f64::max),
+                ) {
+                    out.push(format!(
+                        "rubber stage `{}`: frequency_poly was measured over {lo} … {hi} Hz; α_f is \
+                         held at its end value for {} frequencies in {min:.1} … {max:.1} Hz",
+                        self.connection_names[e.connection],
+                        outside.len()
+                    ));
+                }
+            }
+        }
+        out
+    }
+
     /// Builds the system of a validated model at an operating point.
     pub fn new(model: &Model, point: OperatingPoint) -> Result<Self, PhysicsError> {
         crate::model::validate(model)?;
