@@ -8,6 +8,7 @@
 
 use super::undamped::{Mode, modes};
 use crate::physics::{PhysicsError, System};
+use std::cmp::Ordering;
 
 /// A crossing of an order line with a mode.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -39,7 +40,13 @@ pub struct Campbell {
 
 /// Speeds from `from_rpm` to `to_rpm` in steps of `step_rpm` (the last one included).
 pub fn speed_grid(from_rpm: f64, to_rpm: f64, step_rpm: f64) -> Vec<f64> {
-    if !(step_rpm > 0.0) || !(to_rpm >= from_rpm) {
+    // NaN-aware: a NaN step or bound gives the one-speed grid.
+    let positive_step = step_rpm.partial_cmp(&0.0) == Some(Ordering::Greater);
+    let ordered = matches!(
+        to_rpm.partial_cmp(&from_rpm),
+        Some(Ordering::Greater | Ordering::Equal)
+    );
+    if !positive_step || !ordered {
         return vec![from_rpm];
     }
     let count = ((to_rpm - from_rpm) / step_rpm + 1e-9).floor() as usize;

@@ -89,6 +89,10 @@ pub fn cylinder_spectrum(engine: &Engine, load: f64) -> CylinderSpectrum {
     }
 }
 
+/// A harmonic whose amplitude is tabled over speed: (order index, DOF,
+/// referral·e^{iφ}, speeds in rpm, amplitudes in N·m).
+type TabledHarmonic = (usize, usize, Complex64, Vec<f64>, Vec<f64>);
+
 /// Forcing per order on every DOF, ready for a speed sweep.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Excitation {
@@ -99,7 +103,7 @@ pub struct Excitation {
     /// Part per (crank rad/s)² per order and DOF (oscillating masses), referred.
     per_speed2: Vec<Vec<Complex64>>,
     /// Harmonics whose amplitude varies with speed: (order index, DOF, referral·e^{iφ}, rpm, N·m).
-    tabled: Vec<(usize, usize, Complex64, Vec<f64>, Vec<f64>)>,
+    tabled: Vec<TabledHarmonic>,
     /// Mean engine torque per DOF, N·m referred.
     pub mean_nm: Vec<f64>,
 }
