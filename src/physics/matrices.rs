@@ -45,8 +45,24 @@ pub fn damping_matrix(system: &super::System) -> DMatrix<f64> {
 /// Dynamic stiffness `K(f)(1 + iξ) − ω²M + iωC` at angular frequency `omega_rad_s`,
 /// written into `out` (n×n).
 pub fn dynamic_stiffness(system: &super::System, omega_rad_s: f64, out: &mut DMatrix<Complex64>) {
-    out.fill(Complex64::new(0.0, 0.0));
     let frequency_hz = omega_rad_s / std::f64::consts::TAU;
+    dynamic_stiffness_with(
+        system,
+        omega_rad_s,
+        system.elements.iter().map(|e| e.stiffness_at(frequency_hz)),
+        out,
+    );
+}
+
+/// [`dynamic_stiffness`] with each element's `(stiffness, loss factor)` at `ω/2π` already
+/// evaluated (in element order), for a sweep that needs them again afterwards.
+pub(crate) fn dynamic_stiffness_with(
+    system: &super::System,
+    omega_rad_s: f64,
+    element_stiffness: impl Iterator<Item = (f64, f64)>,
+    out: &mut DMatrix<Complex64>,
+) {
+    out.fill(Complex64::new(0.0, 0.0));
     for (i, (&j, &c)) in system
         .inertia_kg_m2
         .iter()
@@ -55,8 +71,7 @@ pub fn dynamic_stiffness(system: &super::System, omega_rad_s: f64, out: &mut DMa
     {
         out[(i, i)] += Complex64::new(-omega_rad_s * omega_rad_s * j, omega_rad_s * c);
     }
-    for e in &system.elements {
-        let (k, loss) = e.stiffness_at(frequency_hz);
+    for (e, (k, loss)) in system.elements.iter().zip(element_stiffness) {
         let z = Complex64::new(k, k * loss + omega_rad_s * e.viscous_damping());
         add_spring(out, e.from_dof, e.to_dof, z);
     }

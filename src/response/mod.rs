@@ -1,6 +1,7 @@
 //! Frequency domain: steady forced response order by order over a speed sweep
 //! ([`sweep`]) and the synthesized peak torque over a cycle ([`peak`]).
 
+mod lu;
 pub mod peak;
 pub mod sweep;
 

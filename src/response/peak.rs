@@ -97,13 +97,18 @@ impl PeakSynthesizer {
 /// Largest |x| of periodic samples, refined by a parabola through the top three.
 fn refined_peak(samples: &[f64]) -> f64 {
     let n = samples.len();
-    let Some((i, _)) = samples
-        .iter()
-        .enumerate()
-        .max_by(|a, b| a.1.abs().total_cmp(&b.1.abs()))
-    else {
+    if n == 0 {
         return 0.0;
-    };
+    }
+    // `|x|` has its sign bit clear, so `f64::total_cmp` orders it as its bits do; `>=`
+    // keeps the last of equal maxima, as `max_by(total_cmp)` does.
+    let (mut i, mut best) = (0, 0u64);
+    for (j, x) in samples.iter().enumerate() {
+        let bits = x.abs().to_bits();
+        if bits >= best {
+            (i, best) = (j, bits);
+        }
+    }
     let (y0, y1, y2) = (
         samples[(i + n - 1) % n].abs(),
         samples[i].abs(),

@@ -1,9 +1,10 @@
 //! Steady forced response, order by order, over a speed sweep (frequency domain):
 //! `(K(f)(1 + iξ) − ω²M + iωC) Θ_q = T̂_q` at `ω = q·2πn/60` for each speed n and order q.
 
+use super::lu::LuWorkspace;
 use super::peak::PeakSynthesizer;
 use crate::physics::{Excitation, PhysicsError, System, matrices};
-use nalgebra::{DMatrix, DVector};
+use nalgebra::DMatrix;
 use num_complex::Complex64;
 use std::f64::consts::{PI, TAU};
 
@@ -54,7 +55,16 @@ pub fn forced_response(
         power_loss_w: vec![vec![0.0; n_speeds]; n_conn],
     };
     let mut dynamic = DMatrix::<Complex64>::zeros(n, n);
-    let mut forcing = vec![Complex64::default(); n];
+    let mut angle = vec![Complex64::default(); n];
+    let mut lu = LuWorkspace::default();
+    // (stiffness, loss factor) of each element at the current frequency, and its viscous
+    // damping: evaluated once per (speed, order) for the matrix and the element results.
+    let mut stiffness = vec![(0.0, 0.0); n_conn];
+    let viscous: Vec<f64> = system
+        .elements
+        .iter()
+        .map(|e| e.viscous_damping())
+        .collect();
     let mut torques = vec![vec![Complex64::default(); n_orders]; n_conn];
     let mut synthesizer = PeakSynthesizer::new(orders);
     for (s, &speed) in speeds_rpm.iter().enumerate() {
@@ -63,19 +73,24 @@ pub fn forced_response(
             let omega = order * omega_ref;
             let frequency_hz = omega / TAU;
             system.check_frequency(frequency_hz)?;
-            excitation.forcing(q, speed, &mut forcing);
-            matrices::dynamic_stiffness(system, omega, &mut dynamic);
-            let rhs = DVector::from_column_slice(&forcing);
-            let angle = dynamic
-                .clone()
-                .lu()
-                .solve(&rhs)
-                .filter(|a| a.iter().all(|v| v.is_finite()))
-                .ok_or_else(|| {
-                    PhysicsError::Singular(format!(
-                        "order {order} at {speed} rpm ({frequency_hz:.3} Hz) sits on an undamped resonance"
-                    ))
-                })?;
+            excitation.forcing(q, speed, &mut angle);
+            for (slot, e) in stiffness.iter_mut().zip(&system.elements) {
+                *slot = e.stiffness_at(frequency_hz);
+            }
+            matrices::dynamic_stiffness_with(
+                system,
+                omega,
+                stiffness.iter().copied(),
+                &mut dynamic,
+            );
+            // Solved in place: `angle` holds the forcing on entry and Θ_q on return.
+            let solved =
+                lu.factor_solve(&mut dynamic, &mut angle) && angle.iter().all(|v| v.is_finite());
+            if !solved {
+                return Err(PhysicsError::Singular(format!(
+                    "order {order} at {speed} rpm ({frequency_hz:.3} Hz) sits on an undamped resonance"
+                )));
+            }
             for (node, (&dof, &ratio)) in system
                 .dof_of_node
                 .iter()
@@ -86,8 +101,8 @@ pub fn forced_response(
                     ratio.abs() * omega * angle[dof].norm() * RPM_PER_RAD_S;
             }
             for (c, e) in system.elements.iter().enumerate() {
-                let (k, loss) = e.stiffness_at(frequency_hz);
-                let c_visc = e.viscous_damping();
+                let (k, loss) = stiffness[c];
+                let c_visc = viscous[c];
                 let twist = e.from_dof.map_or(Complex64::default(), |d| angle[d])
                     - e.to_dof.map_or(Complex64::default(), |d| angle[d]);
                 let torque_ref = Complex64::new(k, k * loss + omega * c_visc) * twist;
