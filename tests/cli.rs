@@ -256,5 +256,9 @@ fn frequency_beyond_measured_range_warns() {
     let out = torsim(&["modes", "preset:cng-genset"]);
     assert!(out.status.success());
     let stderr = String::from_utf8_lossy(&out.stderr);
-    assert!(stderr.contains("warning: rubber stage `coupling`") && stderr.contains("held at its end value"), "{stderr}");
+    assert!(
+        stderr.contains("warning: rubber stage `coupling`")
+            && stderr.contains("held at its end value"),
+        "{stderr}"
+    );
 }

@@ -33,6 +33,12 @@ pub struct CylinderSpectrum {
 }
 
 impl CylinderSpectrum {
+    /// Cycle-mean torque of one cylinder, N·m: the gas torque's mean (the oscillating
+    /// masses do no net work at constant speed).
+    pub fn mean_torque_nm(&self) -> f64 {
+        self.gas_nm.first().map_or(0.0, |c| c.re)
+    }
+
     /// Gas and inertia coefficients at `order` (zero when `order` is no cycle harmonic).
     pub fn at_order(&self, order: f64) -> (Complex64, Complex64) {
         let k = (order / self.order_step).round();
@@ -137,13 +143,20 @@ impl Excitation {
                 .map(|i| (system.dof_of_node[i], system.speed_ratio[i]))
         };
         if let Some(engine) = &model.engine {
-            let spectrum = cylinder_spectrum(engine, load);
+            let computed;
+            let spectrum = match &system.cylinder_spectrum {
+                Some(s) if system.load == load => s,
+                _ => {
+                    computed = cylinder_spectrum(engine, load);
+                    &computed
+                }
+            };
             let firing = engine.firing_angles_or_even_deg();
             for (cylinder, alpha_deg) in firing.iter().enumerate() {
                 let Some((dof, ratio)) = node_dof(engine.node_of_cylinder(cylinder)) else {
                     continue;
                 };
-                excitation.mean_nm[dof] += spectrum.gas_nm[0].re * ratio;
+                excitation.mean_nm[dof] += spectrum.mean_torque_nm() * ratio;
                 for (q, &order) in orders.iter().enumerate() {
                     let (gas, inertia) = spectrum.at_order(order);
                     let phase = Complex64::from_polar(ratio, -order * alpha_deg.to_radians());

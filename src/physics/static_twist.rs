@@ -12,15 +12,11 @@ use nalgebra::{DMatrix, DVector};
 /// Solves `K θ = T_mean` with the linear (static) stiffnesses and the load node held;
 /// for a tree the result does not depend on the stiffnesses (statically determinate).
 /// A model with a connection to ground and no `[load]` lets the ground hold the torque.
-pub fn static_connection_torques(
-    model: &Model,
-    system: &System,
-    load: f64,
-) -> Result<Vec<f64>, PhysicsError> {
+pub fn static_connection_torques(model: &Model, system: &System) -> Result<Vec<f64>, PhysicsError> {
     let n = system.dof_count();
     let mut torque = DVector::<f64>::zeros(n);
-    if let Some(engine) = &model.engine {
-        let per_cylinder = super::engine::mean_torque_per_cylinder_nm(engine, load);
+    if let (Some(engine), Some(spectrum)) = (&model.engine, &system.cylinder_spectrum) {
+        let per_cylinder = spectrum.mean_torque_nm();
         for cylinder in 0..engine.cylinders as usize {
             if let Some(node) = model.node_index(engine.node_of_cylinder(cylinder)) {
                 torque[system.dof_of_node[node]] += per_cylinder * system.speed_ratio[node];

@@ -9,6 +9,7 @@
 
 use super::element::{Element, ElementLaw, rubber_law};
 use super::error::PhysicsError;
+use super::excitation::{CylinderSpectrum, cylinder_spectrum};
 use super::static_twist::static_connection_torques;
 use super::topology::{free_components, merge_rigid_gears};
 use crate::model::{ConnectionKind, GROUND, Model, graph};
@@ -59,6 +60,11 @@ pub struct System {
     pub reference_node: usize,
     /// Number of rigid-body modes (free components of the DOF graph).
     pub rigid_body_modes: usize,
+    /// One cylinder's torque spectrum at the operating point's load (`None` without an
+    /// engine): the mean torque that twists the stages and the harmonics that drive them.
+    pub cylinder_spectrum: Option<CylinderSpectrum>,
+    /// Engine load the system was built at, 0..1.
+    pub load: f64,
     /// Warnings raised while building (polynomials outside their range), for a person.
     pub warnings: Vec<String>,
 }
@@ -235,10 +241,15 @@ impl System {
             static_twist_rad: vec![None; model.connections.len()],
             reference_node,
             rigid_body_modes,
+            cylinder_spectrum: model
+                .engine
+                .as_ref()
+                .map(|e| cylinder_spectrum(e, point.load)),
+            load: point.load,
             warnings: Vec::new(),
         };
 
-        let mean_torques = static_connection_torques(model, &system, point.load)?;
+        let mean_torques = static_connection_torques(model, &system)?;
         for (e, torque) in system.elements.iter().zip(&mean_torques) {
             system.mean_torque_nm[e.connection] = Some(*torque);
         }

@@ -1,5 +1,8 @@
 //! Steady forced response, order by order, over a speed sweep (frequency domain):
 //! `(K(f)(1 + iξ) − ω²M + iωC) Θ_q = T̂_q` at `ω = q·2πn/60` for each speed n and order q.
+//!
+//! Magnitudes are `sqrt(re² + im²)` rather than `hypot`: the amplitudes here are far from
+//! overflow, and `hypot` cost 15 % of the sweep.
 
 use super::lu::LuWorkspace;
 use super::peak::PeakSynthesizer;
@@ -98,7 +101,7 @@ pub fn forced_response(
                 .enumerate()
             {
                 response.ias_amplitude_rpm[node][q][s] =
-                    ratio.abs() * omega * angle[dof].norm() * RPM_PER_RAD_S;
+                    ratio.abs() * omega * angle[dof].norm_sqr().sqrt() * RPM_PER_RAD_S;
             }
             for (c, e) in system.elements.iter().enumerate() {
                 let (k, loss) = stiffness[c];
@@ -108,7 +111,7 @@ pub fn forced_response(
                 let torque_ref = Complex64::new(k, k * loss + omega * c_visc) * twist;
                 let torque_own = torque_ref / e.torque_ratio;
                 torques[c][q] = torque_own;
-                response.torque_amplitude_nm[c][q][s] = torque_own.norm();
+                response.torque_amplitude_nm[c][q][s] = torque_own.norm_sqr().sqrt();
                 let energy_per_cycle = PI * twist.norm_sqr() * (k * loss + omega * c_visc);
                 response.power_loss_w[c][s] += energy_per_cycle * frequency_hz;
             }
