@@ -91,7 +91,7 @@ pub fn run(o: Options) -> Result<(), CliError> {
     let mut text = String::new();
     outln!(
         text,
-        "{} — forced response at load {load}, orders {} … {}; IAS: largest order amplitude [rpm] (order)",
+        "{} — forced response at load {load}, orders {} … {}; IAS: largest order amplitude [rpm] (order); T_peak: mean + all orders over a cycle",
         model.name,
         order_key(orders[0]),
         order_key(orders[orders.len() - 1])
@@ -99,7 +99,7 @@ pub fn run(o: Options) -> Result<(), CliError> {
     let mut header = vec!["rpm".to_string()];
     header.extend(system.node_names.iter().map(|n| format!("{n} IAS")));
     for &j in &r.connections {
-        header.push(format!("{} T̂ [N·m]", system.connection_names[j]));
+        header.push(format!("{} T_peak [N·m]", system.connection_names[j]));
         header.push(format!("{} P [W]", system.connection_names[j]));
     }
     let stride = speeds.len().div_ceil(MAX_TABLE_ROWS).max(1);
