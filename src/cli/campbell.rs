@@ -2,38 +2,19 @@
 
 use super::error::CliError;
 use super::format::{emit, number, numbers, order_key, outln, print_json, print_warnings, table};
-use super::input::{check_load, load_model, speed_grid};
+use super::input::Sweep;
 use serde_json::{Value, json};
 use std::io::Write;
 use torsim::modal::campbell;
 use torsim::physics::{OperatingPoint, System};
 
-/// Options of the command.
-pub struct Options<'a> {
-    /// Model path or `preset:NAME`.
-    pub model: &'a str,
-    /// Sweep start, rpm.
-    pub from_rpm: Option<f64>,
-    /// Sweep end, rpm.
-    pub to_rpm: Option<f64>,
-    /// Sweep step, rpm.
-    pub step_rpm: Option<f64>,
-    /// Engine load 0..1.
-    pub load: f64,
-    /// CSV file to write.
-    pub csv: Option<&'a str>,
-    /// JSON on stdout.
-    pub json: bool,
-}
-
 /// Runs the command.
-pub fn run(o: Options) -> Result<(), CliError> {
-    let model = load_model(o.model)?;
-    let speeds = speed_grid(&model, o.from_rpm, o.to_rpm, o.step_rpm)?;
+pub fn run(sweep: &Sweep, csv: Option<&str>, json: bool) -> Result<(), CliError> {
+    let (model, speeds, load) = sweep.resolve()?;
     let system = System::new(
         &model,
         OperatingPoint {
-            load: check_load(o.load)?,
+            load,
             temperature_c: None,
         },
     )?;
@@ -44,10 +25,10 @@ pub fn run(o: Options) -> Result<(), CliError> {
     print_warnings(&system.frequency_range_warnings(&frequencies));
     let operating = model.operation.operating_range_rpm;
     let in_operating = |rpm: f64| operating.is_some_and(|[lo, hi]| rpm >= lo && rpm <= hi);
-    if let Some(path) = o.csv {
+    if let Some(path) = csv {
         write_csv(path, &diagram)?;
     }
-    if o.json {
+    if json {
         let modes = diagram
             .frequency_hz
             .iter()

@@ -22,6 +22,45 @@ pub fn load_model(arg: &str) -> Result<Model, CliError> {
     Ok(read_model_file(Path::new(arg))?)
 }
 
+/// What a sweep command sweeps: the model, the speeds and the engine load.
+#[derive(Debug, Clone, clap::Args)]
+pub struct Sweep {
+    /// Model file or preset:NAME.
+    pub model: String,
+    /// First speed, rpm (default: [operation] speed_range_rpm).
+    #[arg(long)]
+    pub from_rpm: Option<f64>,
+    /// Last speed, rpm.
+    #[arg(long)]
+    pub to_rpm: Option<f64>,
+    /// Speed step, rpm (default: 1/200 of the range).
+    #[arg(long)]
+    pub step_rpm: Option<f64>,
+    /// Engine load 0..1: picks the pressure curve and so the mean torque.
+    #[arg(long, default_value_t = 1.0)]
+    pub load: f64,
+}
+
+impl Sweep {
+    /// The model's whole speed range at full load.
+    pub fn whole_range(model: String) -> Self {
+        Self {
+            model,
+            from_rpm: None,
+            to_rpm: None,
+            step_rpm: None,
+            load: 1.0,
+        }
+    }
+
+    /// Loads the model and works out the speed grid and the load.
+    pub fn resolve(&self) -> Result<(Model, Vec<f64>, f64), CliError> {
+        let model = load_model(&self.model)?;
+        let speeds = speed_grid(&model, self.from_rpm, self.to_rpm, self.step_rpm)?;
+        Ok((model, speeds, check_load(self.load)?))
+    }
+}
+
 /// The speed grid of a sweep: the options, else `[operation] speed_range_rpm`; the step
 /// defaults to 1/200 of the range.
 pub fn speed_grid(

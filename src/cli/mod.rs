@@ -47,20 +47,9 @@ pub enum Command {
     },
     /// Modes over speed, order lines and their crossings.
     Campbell {
-        /// Model file or preset:NAME.
-        model: String,
-        /// First speed, rpm (default: [operation] speed_range_rpm).
-        #[arg(long)]
-        from_rpm: Option<f64>,
-        /// Last speed, rpm.
-        #[arg(long)]
-        to_rpm: Option<f64>,
-        /// Speed step, rpm (default: 1/200 of the range).
-        #[arg(long)]
-        step_rpm: Option<f64>,
-        /// Engine load 0..1.
-        #[arg(long, default_value_t = 1.0)]
-        load: f64,
+        /// Model, speeds and load.
+        #[command(flatten)]
+        sweep: input::Sweep,
         /// Write the diagram as CSV.
         #[arg(long)]
         csv: Option<String>,
@@ -70,20 +59,9 @@ pub enum Command {
     },
     /// Steady forced response order by order over a speed sweep.
     Response {
-        /// Model file or preset:NAME.
-        model: String,
-        /// First speed, rpm (default: [operation] speed_range_rpm).
-        #[arg(long)]
-        from_rpm: Option<f64>,
-        /// Last speed, rpm.
-        #[arg(long)]
-        to_rpm: Option<f64>,
-        /// Speed step, rpm (default: 1/200 of the range).
-        #[arg(long)]
-        step_rpm: Option<f64>,
-        /// Engine load 0..1: picks the pressure curve.
-        #[arg(long, default_value_t = 1.0)]
-        load: f64,
+        /// Model, speeds and load.
+        #[command(flatten)]
+        sweep: input::Sweep,
         /// Orders, comma separated (default: [operation] orders).
         #[arg(long, value_delimiter = ',')]
         orders: Option<Vec<f64>>,
@@ -129,15 +107,7 @@ pub fn run(cli: Cli) -> Result<(), CliError> {
                 "torsim: the GUI is not part of this build yet; showing the model's modes and Campbell crossings."
             );
             modes::run(&model, None, 1.0, false)?;
-            campbell::run(campbell::Options {
-                model: &model,
-                from_rpm: None,
-                to_rpm: None,
-                step_rpm: None,
-                load: 1.0,
-                csv: None,
-                json: false,
-            })
+            campbell::run(&input::Sweep::whole_range(model), None, false)
         }
         Some(Command::Modes {
             model,
@@ -145,40 +115,12 @@ pub fn run(cli: Cli) -> Result<(), CliError> {
             load,
             json,
         }) => modes::run(&model, speed_rpm, load, json),
-        Some(Command::Campbell {
-            model,
-            from_rpm,
-            to_rpm,
-            step_rpm,
-            load,
-            csv,
-            json,
-        }) => campbell::run(campbell::Options {
-            model: &model,
-            from_rpm,
-            to_rpm,
-            step_rpm,
-            load,
-            csv: csv.as_deref(),
-            json,
-        }),
+        Some(Command::Campbell { sweep, csv, json }) => campbell::run(&sweep, csv.as_deref(), json),
         Some(Command::Response {
-            model,
-            from_rpm,
-            to_rpm,
-            step_rpm,
-            load,
+            sweep,
             orders,
             json,
-        }) => response::run(response::Options {
-            model: &model,
-            from_rpm,
-            to_rpm,
-            step_rpm,
-            load,
-            orders,
-            json,
-        }),
+        }) => response::run(&sweep, orders, json),
         Some(Command::Check { presets, json }) => check::run(&presets, json),
         Some(Command::Coupling {
             model,

@@ -3,7 +3,7 @@
 
 use super::error::CliError;
 use super::format::{emit, numbers, order_key, outln, print_json, print_warnings, table};
-use super::input::{check_load, load_model, speed_grid};
+use super::input::Sweep;
 use serde_json::{Map, Value, json};
 use torsim::physics::{Excitation, OperatingPoint, System};
 use torsim::response::forced_response;
@@ -11,29 +11,9 @@ use torsim::response::forced_response;
 /// Rows shown in the human-readable table at most.
 const MAX_TABLE_ROWS: usize = 41;
 
-/// Options of the command.
-pub struct Options<'a> {
-    /// Model path or `preset:NAME`.
-    pub model: &'a str,
-    /// Sweep start, rpm.
-    pub from_rpm: Option<f64>,
-    /// Sweep end, rpm.
-    pub to_rpm: Option<f64>,
-    /// Sweep step, rpm.
-    pub step_rpm: Option<f64>,
-    /// Engine load 0..1.
-    pub load: f64,
-    /// Orders instead of the model's.
-    pub orders: Option<Vec<f64>>,
-    /// JSON on stdout.
-    pub json: bool,
-}
-
 /// Runs the command.
-pub fn run(o: Options) -> Result<(), CliError> {
-    let model = load_model(o.model)?;
-    let speeds = speed_grid(&model, o.from_rpm, o.to_rpm, o.step_rpm)?;
-    let load = check_load(o.load)?;
+pub fn run(sweep: &Sweep, orders: Option<Vec<f64>>, json: bool) -> Result<(), CliError> {
+    let (model, speeds, load) = sweep.resolve()?;
     let system = System::new(
         &model,
         OperatingPoint {
@@ -42,7 +22,7 @@ pub fn run(o: Options) -> Result<(), CliError> {
         },
     )?;
     print_warnings(&system.warnings);
-    let orders = o.orders.unwrap_or_else(|| model.orders());
+    let orders = orders.unwrap_or_else(|| model.orders());
     if let Some(bad) = orders.iter().find(|q| !(q.is_finite() && **q > 0.0)) {
         return Err(CliError::input(anyhow::anyhow!(
             "--orders: order {bad} must be > 0"
@@ -55,7 +35,7 @@ pub fn run(o: Options) -> Result<(), CliError> {
         .flat_map(|n| orders.iter().map(move |q| q * n / 60.0))
         .collect();
     print_warnings(&system.frequency_range_warnings(&excited_hz));
-    if o.json {
+    if json {
         let mut nodes = Map::new();
         for (name, per_order) in system.node_names.iter().zip(&r.ias_amplitude_rpm) {
             let mut by_order = Map::new();
