@@ -45,3 +45,4 @@ pub mod modal;
 pub mod model;
 pub mod physics;
 pub mod response;
+pub mod transient;

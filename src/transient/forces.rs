@@ -1,0 +1,193 @@
+//! The equations of motion of a [`Plant`]:
+//! `M_i(θ*)·(α + ω̇_i) = Σ torques on DOF i`, with the engine's inertia `J + Σ m r_v(φ)²`
+//! varying with crank angle (seed 001 eq. 3: the `φ̈·r_v` term moves to the left side),
+//! `α` the mean angular acceleration of a ramp, and the Maxwell arms and rubber
+//! temperatures as further states.
+
+use super::plant::{Plant, PlantElement, PlantLaw, RubberPlant, Temperature};
+use super::speed::SpeedProfile;
+use crate::model::HarmonicAmplitude;
+use crate::physics::excitation::interpolate_held;
+use std::f64::consts::TAU;
+
+/// What one element does at one state: referred torque and dissipated power.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct ElementState {
+    /// Torque passed from `from` to `to`, referred, N·m.
+    pub torque_ref_nm: f64,
+    /// Power dissipated in its damping, W.
+    pub power_w: f64,
+}
+
+impl Plant {
+    /// The twist of an element in its own shaft, rad: `ratio·(θ_from − θ_to)`.
+    fn own_twist(&self, e: &PlantElement, y: &[f64]) -> f64 {
+        let a = e.from_dof.map_or(0.0, |d| y[d]);
+        let b = e.to_dof.map_or(0.0, |d| y[d]);
+        e.ratio * (a - b)
+    }
+
+    /// Torque and dissipation of element `e` at state `y`; writes the arm derivatives of
+    /// a rubber stage into `dy` when given.
+    pub fn element_state(
+        &self,
+        e: &PlantElement,
+        y: &[f64],
+        dy: Option<&mut [f64]>,
+    ) -> ElementState {
+        let n = self.n_dof;
+        match &e.law {
+            PlantLaw::Linear { stiffness, damping } => {
+                let twist = e.from_dof.map_or(0.0, |d| y[d]) - e.to_dof.map_or(0.0, |d| y[d]);
+                let rate =
+                    e.from_dof.map_or(0.0, |d| y[n + d]) - e.to_dof.map_or(0.0, |d| y[n + d]);
+                ElementState {
+                    torque_ref_nm: stiffness * twist + damping * rate,
+                    power_w: damping * rate * rate,
+                }
+            }
+            PlantLaw::Backlash {
+                stiffness_own,
+                half_gap_rad,
+            } => {
+                let d = self.own_twist(e, y);
+                let contact = if d > *half_gap_rad {
+                    d - half_gap_rad
+                } else if d < -half_gap_rad {
+                    d + half_gap_rad
+                } else {
+                    0.0
+                };
+                ElementState {
+                    torque_ref_nm: stiffness_own * contact * e.ratio,
+                    power_w: 0.0,
+                }
+            }
+            PlantLaw::Rubber(r) => rubber_state(r, self.own_twist(e, y), e.ratio, y, dy),
+        }
+    }
+
+    /// Derivatives `dy = f(t, y)` for the speed profile `profile`; `mass` is scratch of
+    /// length `n_dof`.
+    pub fn derivatives(
+        &self,
+        t: f64,
+        y: &[f64],
+        dy: &mut [f64],
+        profile: &SpeedProfile,
+        mass: &mut [f64],
+    ) {
+        let n = self.n_dof;
+        let (phi_m, big_omega, alpha) = profile.at(t);
+        mass.copy_from_slice(&self.inertia_kg_m2);
+        dy[..n].copy_from_slice(&y[n..2 * n]);
+        for i in 0..n {
+            dy[n + i] = -self.damping_nm_s_per_rad[i] * y[n + i];
+        }
+        for e in &self.elements {
+            let s = self.element_state(e, y, Some(dy));
+            if let Some(d) = e.from_dof {
+                dy[n + d] -= s.torque_ref_nm;
+            }
+            if let Some(d) = e.to_dof {
+                dy[n + d] += s.torque_ref_nm;
+            }
+            if let PlantLaw::Rubber(r) = &e.law
+                && let Temperature::Thermal {
+                    state,
+                    capacity_j_per_k,
+                    conductance_w_per_k,
+                    ambient_c,
+                } = r.temperature
+            {
+                dy[state] =
+                    (s.power_w - conductance_w_per_k * (y[state] - ambient_c)) / capacity_j_per_k;
+            }
+        }
+        if let Some(engine) = &self.engine {
+            let m = engine.oscillating_mass_kg;
+            let (r, lambda) = (engine.crank_radius_m, engine.lambda);
+            let samples = engine.pressure_pa.len() as f64;
+            for c in &engine.cylinders {
+                let phi = c.ratio * (phi_m + y[c.dof]) - c.firing_rad;
+                let speed = c.ratio * (big_omega + y[n + c.dof]);
+                let (s1, c1) = phi.sin_cos();
+                let (s2, c2) = (2.0 * s1 * c1, c1 * c1 - s1 * s1);
+                let rv = r * (s1 + 0.5 * lambda * s2);
+                let ra = r * (c1 + lambda * c2);
+                let x = phi.rem_euclid(engine.cycle_rad) / engine.cycle_rad * samples;
+                let k = (x as usize).min(engine.pressure_pa.len() - 1);
+                let next = engine.pressure_pa[(k + 1) % engine.pressure_pa.len()];
+                let p = engine.pressure_pa[k] + (x - k as f64) * (next - engine.pressure_pa[k]);
+                let torque_own = p * engine.area_m2 * rv - m * speed * speed * ra * rv;
+                dy[n + c.dof] += torque_own * c.ratio;
+                mass[c.dof] += m * rv * rv * c.ratio * c.ratio;
+            }
+        }
+        let crank = phi_m + y[self.reference_dof];
+        let speed_rpm = big_omega * 60.0 / TAU;
+        for h in &self.harmonics {
+            let amplitude = match &h.amplitude {
+                HarmonicAmplitude::Constant(a) => *a,
+                HarmonicAmplitude::BySpeed {
+                    speed_rpm: rpm,
+                    amplitude_nm,
+                } => interpolate_held(rpm, amplitude_nm, speed_rpm),
+            };
+            dy[n + h.dof] += h.ratio * amplitude * (h.order * crank + h.phase_rad).cos();
+        }
+        if let Some(g) = &self.governor {
+            let mean = self.engine.as_ref().map_or(0.0, |e| e.mean_torque_nm);
+            dy[n + g.dof] +=
+                -mean + g.total_inertia_kg_m2 * alpha - g.kp * y[n + g.dof] - g.ki * y[g.dof];
+        }
+        for i in 0..n {
+            dy[n + i] = dy[n + i] / mass[i] - alpha;
+        }
+    }
+}
+
+/// Secant amplitude factor, temperature factors and the chain: the stage's torque (own
+/// shaft) is `c_Tstat·α_x(x)·α_Tc(T)·[k∞ φ + α_Tξ(T) Σ k_j (φ − q_j)]` (seed 000 eq. 1–2,
+/// 10–15 with the causal chain of [`super::maxwell`]).
+fn rubber_state(
+    r: &RubberPlant,
+    twist_own: f64,
+    ratio: f64,
+    y: &[f64],
+    dy: Option<&mut [f64]>,
+) -> ElementState {
+    let temperature = match r.temperature {
+        Temperature::Fixed(t) => t,
+        Temperature::Thermal { state, .. } => y[state],
+    };
+    let alpha_x = match (&r.amplitude_poly, r.mm_per_rad) {
+        (Some(p), Some(mm)) => p.eval(twist_own.abs() * mm),
+        _ => 1.0,
+    };
+    let alpha_tc = r
+        .temperature_stiffness_poly
+        .as_ref()
+        .map_or(1.0, |p| p.eval(temperature));
+    let alpha_txi = r
+        .temperature_damping_poly
+        .as_ref()
+        .map_or(1.0, |p| p.eval(temperature));
+    let scale = r.static_stiffness_nm_per_rad * alpha_x * alpha_tc;
+    let mut arms_torque = 0.0;
+    let mut arms_power = 0.0;
+    let mut dy = dy;
+    for (j, &(k, tau)) in r.chain.arms.iter().enumerate() {
+        let stretch = twist_own - y[r.arm_offset + j];
+        arms_torque += k * stretch;
+        arms_power += k * stretch * stretch / tau;
+        if let Some(d) = dy.as_deref_mut() {
+            d[r.arm_offset + j] = stretch / tau;
+        }
+    }
+    let torque_own = scale * (r.chain.equilibrium * twist_own + alpha_txi * arms_torque);
+    ElementState {
+        torque_ref_nm: torque_own * ratio,
+        power_w: scale * alpha_txi * arms_power,
+    }
+}

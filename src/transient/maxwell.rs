@@ -1,0 +1,199 @@
+//! A causal time-domain representation of a rubber stage's frequency-dependent stiffness
+//! and hysteretic damping: a generalized Maxwell chain fitted over the excited band.
+//!
+//! The torque (per unit static stiffness `c_Tstat`, before the amplitude and temperature
+//! factors) is `k∞·φ + Σ_j k_j (φ − q_j)` with `q̇_j = (φ − q_j)/τ_j`, whose complex
+//! stiffness is `K*(ω) = k∞ + Σ_j k_j·iωτ_j/(1 + iωτ_j)`. The target is seed 000's law,
+//! `α_f(f)·(1 + iξ0)` with `ξ0 = ψ/2π` (eq. 9, 13–15). `k∞ = α_f(0)` keeps the static
+//! stiffness exact (the twist under the mean torque); the arm stiffnesses `k_j ≥ 0` at
+//! relaxation times spaced four per decade over the band are found by non-negative least
+//! squares on the relative errors of the real and the imaginary part.
+//!
+//! A frequency-independent loss factor is not causal (Kramers–Kronig): a causal material
+//! with a nearly constant loss must stiffen with frequency. The fit therefore meets ψ and
+//! α_f only approximately; [`MaxwellChain::stiffness_error`] and
+//! [`MaxwellChain::loss_error`] give its worst relative errors over the band.
+
+use super::nnls::nnls;
+use crate::model::RubberStage;
+use nalgebra::{DMatrix, DVector};
+use num_complex::Complex64;
+use std::f64::consts::TAU;
+
+/// Relaxation times per decade of frequency.
+const ARMS_PER_DECADE: f64 = 4.0;
+/// Fit frequencies per decade.
+const SAMPLES_PER_DECADE: f64 = 12.0;
+/// Weight of the stiffness rows against the loss rows: stiffness places the resonances,
+/// so it is matched first where the two cannot both be met.
+const STIFFNESS_WEIGHT: f64 = 2.0;
+
+/// A fitted generalized Maxwell chain (stiffnesses relative to `c_Tstat`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct MaxwellChain {
+    /// Equilibrium stiffness `k∞`: α_f at 0 Hz.
+    pub equilibrium: f64,
+    /// Arms `(k_j, τ_j)`: relative stiffness and relaxation time in s; arms the fit gave
+    /// zero stiffness are dropped.
+    pub arms: Vec<(f64, f64)>,
+    /// The band fitted, Hz.
+    pub band_hz: [f64; 2],
+    /// Worst relative error of the real part (stiffness) over the band.
+    pub stiffness_error: f64,
+    /// Worst relative error of the imaginary part (loss) over the band.
+    pub loss_error: f64,
+}
+
+impl MaxwellChain {
+    /// Fits the chain to `stage`'s α_f and ψ over `band_hz = [lo, hi]` (lo > 0).
+    pub fn fit(stage: &RubberStage, band_hz: [f64; 2]) -> Self {
+        let [lo, hi] = [band_hz[0].max(1e-3), band_hz[1].max(band_hz[0] * 1.01)];
+        let xi0 = stage.psi / TAU;
+        let alpha_f = |f: f64| stage.frequency_poly.as_ref().map_or(1.0, |p| p.eval(f));
+        let equilibrium = alpha_f(0.0);
+        let decades = (hi / lo).log10();
+        // Arms from half an octave below the band to half an octave above it.
+        let (arm_lo, arm_hi) = (lo / 1.5, hi * 1.5);
+        let n_arms = ((arm_hi / arm_lo).log10() * ARMS_PER_DECADE).ceil() as usize + 1;
+        let arm_hz: Vec<f64> = log_space(arm_lo, arm_hi, n_arms);
+        let taus: Vec<f64> = arm_hz.iter().map(|f| 1.0 / (TAU * f)).collect();
+        let n_samples = ((decades * SAMPLES_PER_DECADE).ceil() as usize + 1).max(8);
+        let freqs = log_space(lo, hi, n_samples);
+        let mut a = DMatrix::<f64>::zeros(2 * n_samples, n_arms);
+        let mut b = DVector::<f64>::zeros(2 * n_samples);
+        for (s, &f) in freqs.iter().enumerate() {
+            let target = alpha_f(f);
+            for (j, &tau) in taus.iter().enumerate() {
+                let arm = arm_response(TAU * f, tau);
+                a[(2 * s, j)] = STIFFNESS_WEIGHT * arm.re / target;
+                a[(2 * s + 1, j)] = arm.im / (target * xi0);
+            }
+            b[2 * s] = STIFFNESS_WEIGHT * (target - equilibrium) / target;
+            b[2 * s + 1] = 1.0;
+        }
+        let k = nnls(&a, &b);
+        let arms: Vec<(f64, f64)> = k
+            .iter()
+            .zip(&taus)
+            .filter(|(k, _)| **k > 0.0)
+            .map(|(k, t)| (*k, *t))
+            .collect();
+        let mut chain = MaxwellChain {
+            equilibrium,
+            arms,
+            band_hz: [lo, hi],
+            stiffness_error: 0.0,
+            loss_error: 0.0,
+        };
+        for f in log_space(lo, hi, 4 * n_samples) {
+            let k = chain.complex_stiffness(f);
+            let target = alpha_f(f);
+            chain.stiffness_error = chain.stiffness_error.max((k.re - target).abs() / target);
+            chain.loss_error = chain
+                .loss_error
+                .max((k.im - target * xi0).abs() / (target * xi0));
+        }
+        chain
+    }
+
+    /// `K*(f)` relative to `c_Tstat`.
+    pub fn complex_stiffness(&self, frequency_hz: f64) -> Complex64 {
+        let omega = TAU * frequency_hz;
+        self.arms
+            .iter()
+            .fold(Complex64::new(self.equilibrium, 0.0), |acc, &(k, tau)| {
+                acc + k * arm_response(omega, tau)
+            })
+    }
+}
+
+/// `iωτ/(1 + iωτ)`: one Maxwell arm of unit stiffness.
+fn arm_response(omega: f64, tau: f64) -> Complex64 {
+    let x = omega * tau;
+    Complex64::new(x * x, x) / (1.0 + x * x)
+}
+
+/// `n` points from `lo` to `hi`, evenly spaced in log.
+fn log_space(lo: f64, hi: f64, n: usize) -> Vec<f64> {
+    if n < 2 {
+        return vec![lo];
+    }
+    let step = (hi / lo).ln() / (n - 1) as f64;
+    (0..n).map(|i| lo * (step * i as f64).exp()).collect()
+}
+
+/// The band a steady run at `speed_rpm` (or a ramp between two speeds) excites: from a
+/// quarter of order 0.5 at the lowest speed to 1.5 × order `max_order` at the highest, Hz.
+pub fn excited_band_hz(min_speed_rpm: f64, max_speed_rpm: f64, max_order: f64) -> [f64; 2] {
+    let lo = (0.25 * 0.5 * min_speed_rpm / 60.0).max(0.1);
+    let hi = (1.5 * max_order * max_speed_rpm / 60.0).max(4.0 * lo);
+    [lo, hi]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::{Poly, RubberStiffness};
+
+    fn stage(frequency_poly: Option<Poly>) -> RubberStage {
+        RubberStage {
+            stiffness: RubberStiffness::Direct(1.0e4),
+            psi: 1.0,
+            temperature_c: 25.0,
+            amplitude_poly: None,
+            frequency_poly,
+            temperature_stiffness_poly: None,
+            temperature_damping_poly: None,
+            thermal: None,
+        }
+    }
+
+    /// A nearly causal target — constant stiffness with a small loss (ψ = 0.2, ξ = 0.032)
+    /// over one decade. Kramers–Kronig asks ~(2/π)·ξ·ln 10 ≈ 5 % stiffening across it,
+    /// and with the static stiffness held exact the arms can only add stiffness, so the
+    /// fit is 7.1 % stiff at the top of the band and 10.4 % off in loss (measured); the
+    /// bounds leave a little room.
+    #[test]
+    fn fits_a_nearly_causal_law() {
+        let mut s = stage(None);
+        s.psi = 0.2;
+        let chain = MaxwellChain::fit(&s, [20.0, 200.0]);
+        assert!((chain.complex_stiffness(0.0).re - 1.0).abs() < 1e-15);
+        assert!(
+            chain.stiffness_error < 0.075,
+            "stiffness error {}",
+            chain.stiffness_error
+        );
+        assert!(chain.loss_error < 0.11, "loss error {}", chain.loss_error);
+        assert!(chain.arms.iter().all(|(k, t)| *k > 0.0 && *t > 0.0));
+    }
+
+    /// Seed 000's α_f (×3 from 0 to 300 Hz) with ψ = 1 is not causal: a causal chain that
+    /// stiffens that much loses far more than ψ. The fit reports its errors honestly and
+    /// they are large; the values pin the documented compromise (band 10–400 Hz).
+    #[test]
+    fn reports_the_error_of_seed_000_law() {
+        let poly = Poly {
+            coeffs: [-0.000023, 0.01519, 1.0],
+            range: Some([0.0, 300.0]),
+        };
+        let chain = MaxwellChain::fit(&stage(Some(poly)), [10.0, 400.0]);
+        assert!((chain.complex_stiffness(0.0).re - 1.0).abs() < 1e-15);
+        assert!(
+            chain.stiffness_error > 0.1 && chain.stiffness_error < 0.45,
+            "{}",
+            chain.stiffness_error
+        );
+        assert!(
+            chain.loss_error > 0.1 && chain.loss_error < 1.0,
+            "{}",
+            chain.loss_error
+        );
+        // Stiffness still rises monotonically across the band, as α_f does.
+        let re: Vec<f64> = [10.0, 30.0, 100.0, 300.0]
+            .iter()
+            .map(|&f| chain.complex_stiffness(f).re)
+            .collect();
+        assert!(re.windows(2).all(|w| w[1] > w[0]), "{re:?}");
+    }
+}

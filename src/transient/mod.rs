@@ -1,0 +1,24 @@
+//! Time domain: the nonlinear driveline integrated in time (seed 001 eq. 3–6 with the
+//! rubber law of seed 000), steady runs and run-ups.
+//!
+//! - [`plant`]: the state layout and constants of a run; [`forces`]: the equations of
+//!   motion — crank-angle-dependent engine inertia, secant rubber stiffness with a causal
+//!   Maxwell chain ([`maxwell`]) and self-heating, gear backlash, a speed governor at the
+//!   load of a free driveline;
+//! - [`dopri`]: Dormand–Prince 5(4) with error control and dense output;
+//! - [`run`]: settling cycle by cycle, then recording a steady run or a ramp
+//!   ([`speed`]).
+
+pub mod dopri;
+mod error;
+pub mod forces;
+pub mod maxwell;
+mod nnls;
+pub mod plant;
+pub mod run;
+pub mod speed;
+mod start;
+
+pub use error::TransientError;
+pub use run::{RunKind, RunOptions, Settling, Simulation, simulate};
+pub use speed::SpeedProfile;

@@ -1,0 +1,388 @@
+//! The driveline as a time-domain plant: the state layout and everything the equations of
+//! motion need, built once from a model for one run.
+//!
+//! Coordinates: every DOF's angle is its vibration about the mean rotation `φ_m(t)`,
+//! referred to the engine shaft (as in [`crate::physics::System`]); the frame (`ground`)
+//! turns with the mean rotation too (seed 001's brake side). State:
+//! `[θ_0…θ_{n−1}, ω_0…ω_{n−1}, q (Maxwell arms, own-shaft rad), T (rubber °C)]`.
+
+use super::TransientError;
+use super::maxwell::{MaxwellChain, excited_band_hz};
+use crate::model::{ConnectionKind, GROUND, HarmonicAmplitude, Model, Poly};
+use crate::physics::{OperatingPoint, System, engine};
+
+/// Samples of the cylinder pressure table per working cycle (0.1° for a 4-stroke).
+const PRESSURE_SAMPLES: usize = 7200;
+
+/// A rubber stage in the time domain (seed 000 eq. 1–2, 10–15 with a Maxwell chain).
+#[derive(Debug, Clone)]
+pub struct RubberPlant {
+    /// Static torsional stiffness at 25 °C, own shaft, N·m/rad.
+    pub static_stiffness_nm_per_rad: f64,
+    /// Element pitch radius × 1000 (mm of radial deformation per rad), when from elements.
+    pub mm_per_rad: Option<f64>,
+    /// α_x(x), α_Tc(T), α_Tξ(T).
+    pub amplitude_poly: Option<Poly>,
+    /// α_Tc(T).
+    pub temperature_stiffness_poly: Option<Poly>,
+    /// α_Tξ(T).
+    pub temperature_damping_poly: Option<Poly>,
+    /// The fitted chain.
+    pub chain: MaxwellChain,
+    /// Index of the first arm state in the state vector.
+    pub arm_offset: usize,
+    /// Index of this stage's temperature state, or the fixed temperature.
+    pub temperature: Temperature,
+}
+
+/// A rubber stage's temperature: fixed, or a state of its own.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Temperature {
+    /// Held at this value, °C.
+    Fixed(f64),
+    /// Evolves (`thermal`): state index, heat capacity J/K, conductance W/K, ambient °C.
+    Thermal {
+        /// Index in the state vector.
+        state: usize,
+        /// Heat capacity, J/K.
+        capacity_j_per_k: f64,
+        /// Conductance to ambient, W/K.
+        conductance_w_per_k: f64,
+        /// Ambient temperature, °C.
+        ambient_c: f64,
+    },
+}
+
+/// How a connection acts in the time domain.
+#[derive(Debug, Clone)]
+pub enum PlantLaw {
+    /// Linear spring and viscous damper (referred).
+    Linear {
+        /// N·m/rad referred.
+        stiffness: f64,
+        /// N·m·s/rad referred.
+        damping: f64,
+    },
+    /// A rubber stage.
+    Rubber(Box<RubberPlant>),
+    /// A gear mesh with backlash: `T = k·dz(δ)` with free play ±half gap (own, `to` side).
+    Backlash {
+        /// Mesh stiffness, own shaft (`to` side), N·m/rad.
+        stiffness_own: f64,
+        /// Half the free play, rad at the `to` side.
+        half_gap_rad: f64,
+    },
+}
+
+/// A connection in the plant.
+#[derive(Debug, Clone)]
+pub struct PlantElement {
+    /// Model connection index.
+    pub connection: usize,
+    /// DOF at `from` (`None`: ground).
+    pub from_dof: Option<usize>,
+    /// DOF at `to` (`None`: ground).
+    pub to_dof: Option<usize>,
+    /// |Speed ratio| of the connection's own shaft: own angle = ratio × referred angle.
+    pub ratio: f64,
+    /// The law.
+    pub law: PlantLaw,
+}
+
+/// One cylinder acting on a DOF.
+#[derive(Debug, Clone, Copy)]
+pub struct Cylinder {
+    /// DOF it acts on.
+    pub dof: usize,
+    /// Speed ratio of its node (1 on the crank).
+    pub ratio: f64,
+    /// Firing angle after cylinder 1, rad.
+    pub firing_rad: f64,
+}
+
+/// The engine's per-cylinder constants (seed 001 eq. 3–4).
+#[derive(Debug, Clone)]
+pub struct EnginePlant {
+    /// Piston area, m².
+    pub area_m2: f64,
+    /// Crank radius r, m.
+    pub crank_radius_m: f64,
+    /// λ = r/l.
+    pub lambda: f64,
+    /// Oscillating mass `m_p + m_A − J0/l²`, kg.
+    pub oscillating_mass_kg: f64,
+    /// Working cycle, rad.
+    pub cycle_rad: f64,
+    /// Gauge pressure in Pa on a uniform grid over the cycle from firing TDC.
+    pub pressure_pa: Vec<f64>,
+    /// The cylinders.
+    pub cylinders: Vec<Cylinder>,
+    /// Cycle-mean torque of all cylinders, referred, N·m.
+    pub mean_torque_nm: f64,
+}
+
+/// A prescribed harmonic torque.
+#[derive(Debug, Clone)]
+pub struct HarmonicPlant {
+    /// DOF it acts on.
+    pub dof: usize,
+    /// Referral ratio.
+    pub ratio: f64,
+    /// Order.
+    pub order: f64,
+    /// Phase, rad.
+    pub phase_rad: f64,
+    /// Amplitude.
+    pub amplitude: HarmonicAmplitude,
+}
+
+/// The brake or generator that holds the mean speed of a driveline not tied to ground: it
+/// takes the engine's mean torque (less what accelerates the driveline in a ramp) and
+/// corrects slow drift like a speed governor — a critically damped PI loop at 0.5 Hz, far
+/// below any torsional mode, so it does not touch the vibration.
+#[derive(Debug, Clone, Copy)]
+pub struct Governor {
+    /// DOF of the load node.
+    pub dof: usize,
+    /// Proportional gain, N·m·s/rad.
+    pub kp: f64,
+    /// Integral gain, N·m/rad.
+    pub ki: f64,
+    /// Total referred inertia of the driveline, kg·m².
+    pub total_inertia_kg_m2: f64,
+}
+
+/// Governor bandwidth, Hz.
+pub const GOVERNOR_HZ: f64 = 0.5;
+
+/// Everything the equations of motion need.
+#[derive(Debug, Clone)]
+pub struct Plant {
+    /// Number of DOFs.
+    pub n_dof: usize,
+    /// Referred inertia per DOF without the reciprocating masses, kg·m².
+    pub inertia_kg_m2: Vec<f64>,
+    /// Referred absolute damping per DOF (nodes, load), on vibration, N·m·s/rad.
+    pub damping_nm_s_per_rad: Vec<f64>,
+    /// Connections.
+    pub elements: Vec<PlantElement>,
+    /// The engine, if any.
+    pub engine: Option<EnginePlant>,
+    /// Prescribed harmonics.
+    pub harmonics: Vec<HarmonicPlant>,
+    /// Speed holder of a free driveline.
+    pub governor: Option<Governor>,
+    /// DOF of the reference node (crank).
+    pub reference_dof: usize,
+    /// Length of the state vector.
+    pub state_len: usize,
+    /// The linear system the plant was built from (names, ratios, static twist).
+    pub system: System,
+    /// Start temperature of each connection that is a rubber stage, °C.
+    pub start_temperature_c: Vec<Option<f64>>,
+}
+
+impl Plant {
+    /// Builds the plant of `model` at engine `load` for speeds between `min_rpm` and
+    /// `max_rpm` (they set the band the rubber chains are fitted over).
+    pub fn new(
+        model: &Model,
+        load: f64,
+        min_rpm: f64,
+        max_rpm: f64,
+    ) -> Result<Self, TransientError> {
+        let system = System::new(
+            model,
+            OperatingPoint {
+                load,
+                temperature_c: None,
+            },
+        )?;
+        let n = system.dof_count();
+        let mut inertia = vec![0.0; n];
+        for (i, node) in model.inertias.iter().enumerate() {
+            inertia[system.dof_of_node[i]] += node.inertia_kg_m2 * system.speed_ratio[i].powi(2);
+        }
+        let damping = system.absolute_damping_nm_s_per_rad.clone();
+        let band = excited_band_hz(min_rpm, max_rpm, 24.0);
+        let dof_of = |name: &str| {
+            (name != GROUND)
+                .then(|| model.node_index(name).map(|i| system.dof_of_node[i]))
+                .flatten()
+        };
+        let ratio_of = |name: &str| {
+            model
+                .node_index(name)
+                .map_or(1.0, |i| system.speed_ratio[i].abs())
+        };
+        let mut state_len = 2 * n;
+        let mut elements = Vec::new();
+        for (j, c) in model.connections.iter().enumerate() {
+            let (from_dof, to_dof) = (dof_of(&c.from), dof_of(&c.to));
+            let own = if c.from == GROUND {
+                ratio_of(&c.to)
+            } else {
+                ratio_of(&c.from)
+            };
+            let (ratio, law) = match &c.kind {
+                ConnectionKind::Shaft(s) => (
+                    own,
+                    PlantLaw::Linear {
+                        stiffness: s.stiffness_nm_per_rad * own * own,
+                        damping: s.damping_nm_s_per_rad * own * own,
+                    },
+                ),
+                ConnectionKind::Gear(g) => match (g.mesh_stiffness_nm_per_rad, g.backlash_deg) {
+                    (None, b) if b > 0.0 => {
+                        return Err(TransientError::Model(format!(
+                            "gear `{}`: backlash_deg needs mesh_stiffness (a rigid gear has no free play)",
+                            c.name
+                        )));
+                    }
+                    (None, _) => continue,
+                    (Some(k), b) => (
+                        ratio_of(&c.to),
+                        PlantLaw::Backlash {
+                            stiffness_own: k,
+                            half_gap_rad: 0.5 * b.to_radians(),
+                        },
+                    ),
+                },
+                ConnectionKind::Rubber(stage) => {
+                    let chain = MaxwellChain::fit(stage, band);
+                    let arm_offset = state_len;
+                    state_len += chain.arms.len();
+                    let temperature = match &stage.thermal {
+                        None => Temperature::Fixed(stage.temperature_c),
+                        Some(t) => {
+                            state_len += 1;
+                            Temperature::Thermal {
+                                state: state_len - 1,
+                                capacity_j_per_k: t.capacity_j_per_k,
+                                conductance_w_per_k: t.conductance_w_per_k,
+                                ambient_c: t.ambient_c,
+                            }
+                        }
+                    };
+                    (
+                        own,
+                        PlantLaw::Rubber(Box::new(RubberPlant {
+                            static_stiffness_nm_per_rad: stage.static_stiffness_nm_per_rad(),
+                            mm_per_rad: stage.pitch_radius_m().map(|r| r * 1000.0),
+                            amplitude_poly: stage.amplitude_poly.clone(),
+                            temperature_stiffness_poly: stage.temperature_stiffness_poly.clone(),
+                            temperature_damping_poly: stage.temperature_damping_poly.clone(),
+                            chain,
+                            arm_offset,
+                            temperature,
+                        })),
+                    )
+                }
+            };
+            elements.push(PlantElement {
+                connection: j,
+                from_dof,
+                to_dof,
+                ratio,
+                law,
+            });
+        }
+        let engine = model.engine.as_ref().map(|e| {
+            let cycle_rad = e.cycle_deg().to_radians();
+            let pressure_pa = (0..PRESSURE_SAMPLES)
+                .map(|k| {
+                    engine::pressure_bar(
+                        e,
+                        load,
+                        e.cycle_deg() * k as f64 / PRESSURE_SAMPLES as f64,
+                    ) * 1.0e5
+                })
+                .collect();
+            let cylinders: Vec<Cylinder> = e
+                .firing_angles_or_even_deg()
+                .iter()
+                .enumerate()
+                .filter_map(|(c, a)| {
+                    let node = model.node_index(e.node_of_cylinder(c))?;
+                    Some(Cylinder {
+                        dof: system.dof_of_node[node],
+                        ratio: system.speed_ratio[node],
+                        firing_rad: a.to_radians(),
+                    })
+                })
+                .collect();
+            let per_cylinder = system
+                .cylinder_spectrum
+                .as_ref()
+                .map_or(0.0, |s| s.mean_torque_nm());
+            EnginePlant {
+                area_m2: engine::piston_area_m2(e),
+                crank_radius_m: e.crank_radius_m,
+                lambda: engine::lambda(e),
+                oscillating_mass_kg: engine::oscillating_mass_kg(e),
+                cycle_rad,
+                pressure_pa,
+                mean_torque_nm: cylinders.iter().map(|c| per_cylinder * c.ratio).sum(),
+                cylinders,
+            }
+        });
+        let harmonics = model
+            .harmonics
+            .iter()
+            .filter_map(|h| {
+                let node = model.node_index(&h.at)?;
+                Some(HarmonicPlant {
+                    dof: system.dof_of_node[node],
+                    ratio: system.speed_ratio[node],
+                    order: h.order,
+                    phase_rad: h.phase_deg.to_radians(),
+                    amplitude: h.amplitude.clone(),
+                })
+            })
+            .collect();
+        let total: f64 = system.inertia_kg_m2.iter().sum();
+        let governor = (model.load.is_some() || !model.is_grounded())
+            .then(|| model.load_node().and_then(|name| model.node_index(name)))
+            .flatten()
+            .map(|node| {
+                let w = std::f64::consts::TAU * GOVERNOR_HZ;
+                Governor {
+                    dof: system.dof_of_node[node],
+                    kp: 2.0 * w * total,
+                    ki: w * w * total,
+                    total_inertia_kg_m2: total,
+                }
+            });
+        Ok(Plant {
+            n_dof: n,
+            inertia_kg_m2: inertia,
+            damping_nm_s_per_rad: damping,
+            elements,
+            engine,
+            harmonics,
+            governor,
+            reference_dof: system.dof_of_node[system.reference_node],
+            state_len,
+            system,
+            start_temperature_c: model
+                .connections
+                .iter()
+                .map(|c| match &c.kind {
+                    ConnectionKind::Rubber(r) => Some(r.temperature_c),
+                    _ => None,
+                })
+                .collect(),
+        })
+    }
+}
+
+impl Plant {
+    /// Start temperature of the rubber stage of connection `connection`, °C.
+    pub fn system_temperature(&self, connection: usize) -> f64 {
+        self.start_temperature_c
+            .get(connection)
+            .copied()
+            .flatten()
+            .unwrap_or(25.0)
+    }
+}

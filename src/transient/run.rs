@@ -1,0 +1,374 @@
+//! Steady runs and run-ups: start from the static twist, integrate working cycle by
+//! working cycle until the cycle-to-cycle change is below tolerance, then record at the
+//! output rate (a steady speed for a duration, or a linear speed ramp).
+
+use super::TransientError;
+use super::dopri::Dopri5;
+use super::maxwell::MaxwellChain;
+use super::plant::{Plant, PlantLaw, Temperature};
+use super::speed::SpeedProfile;
+use super::start::initial_state;
+use crate::model::Model;
+use std::f64::consts::TAU;
+
+/// What to run.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum RunKind {
+    /// Constant mean speed of the reference shaft for `duration_s` after settling.
+    Steady {
+        /// Mean speed, rpm.
+        speed_rpm: f64,
+        /// Recorded duration, s.
+        duration_s: f64,
+    },
+    /// A linear ramp after settling at `from_rpm` (run-up, or run-down if `to < from`).
+    Ramp {
+        /// Start speed, rpm.
+        from_rpm: f64,
+        /// End speed, rpm.
+        to_rpm: f64,
+        /// Ramp (and recording) duration, s.
+        duration_s: f64,
+    },
+}
+
+/// How to run.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RunOptions {
+    /// Engine load 0..1 (default 1).
+    pub load: f64,
+    /// Output rate, Hz (default 10240, seed 001's IAS rate).
+    pub rate_hz: f64,
+    /// Relative tolerance of the integrator (default 1e-6).
+    pub rtol: f64,
+    /// Cycle-to-cycle change of the speeds, relative to their vibration amplitude, below
+    /// which a run counts as settled (default 1e-4).
+    pub settle_tolerance: f64,
+    /// Longest settling time before recording anyway, s (default 60).
+    pub max_settle_s: f64,
+}
+
+impl Default for RunOptions {
+    fn default() -> Self {
+        Self {
+            load: 1.0,
+            rate_hz: 10240.0,
+            rtol: 1e-6,
+            settle_tolerance: 1e-4,
+            max_settle_s: 60.0,
+        }
+    }
+}
+
+/// How the settling went.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Settling {
+    /// Working cycles integrated before recording.
+    pub cycles: usize,
+    /// Simulated time before recording, s.
+    pub time_s: f64,
+    /// Last cycle-to-cycle change (relative).
+    pub change: f64,
+    /// True when the change fell below the tolerance.
+    pub converged: bool,
+}
+
+/// A recorded simulation: what a bench would have measured, and more.
+#[derive(Debug, Clone)]
+pub struct Simulation {
+    /// Node names, model order.
+    pub node_names: Vec<String>,
+    /// Reference node index.
+    pub reference_node: usize,
+    /// Sample times from the start of recording, s.
+    pub time_s: Vec<f64>,
+    /// IAS of every node in its own shaft, rpm: `[node][sample]`.
+    pub speed_rpm: Vec<Vec<f64>>,
+    /// Torque of every connection with an element, own shaft, N·m: `(connection, samples)`.
+    pub torque_nm: Vec<(usize, Vec<f64>)>,
+    /// Temperature of every rubber stage with `thermal`, °C: `(connection, samples)`.
+    pub temperature_c: Vec<(usize, Vec<f64>)>,
+    /// Connection names, model order.
+    pub connection_names: Vec<String>,
+    /// Fitted Maxwell chain of each rubber stage: `(connection, chain)`.
+    pub chains: Vec<(usize, MaxwellChain)>,
+    /// Settling before the recording.
+    pub settling: Settling,
+    /// Integrator steps (accepted, rejected).
+    pub steps: (u64, u64),
+}
+
+/// Runs `kind` on `model`. `progress` is called with the fraction done (0–1) a few
+/// hundred times per run; returning `false` cancels.
+pub fn simulate(
+    model: &Model,
+    kind: RunKind,
+    options: RunOptions,
+    progress: &mut dyn FnMut(f64) -> bool,
+) -> Result<Simulation, TransientError> {
+    let (from_rpm, to_rpm, duration_s) = match kind {
+        RunKind::Steady {
+            speed_rpm,
+            duration_s,
+        } => (speed_rpm, speed_rpm, duration_s),
+        RunKind::Ramp {
+            from_rpm,
+            to_rpm,
+            duration_s,
+        } => (from_rpm, to_rpm, duration_s),
+    };
+    for (what, v) in [
+        ("speed", from_rpm),
+        ("speed", to_rpm),
+        ("rate", options.rate_hz),
+        ("duration", duration_s),
+    ] {
+        if !(v.is_finite() && v > 0.0) {
+            return Err(TransientError::Model(format!(
+                "{what} must be a positive number, got {v}"
+            )));
+        }
+    }
+    let plant = Plant::new(
+        model,
+        options.load,
+        from_rpm.min(to_rpm),
+        from_rpm.max(to_rpm),
+    )?;
+    let cycle_rad = plant.engine.as_ref().map_or(2.0 * TAU, |e| e.cycle_rad);
+    let mut profile = SpeedProfile::steady(from_rpm);
+    let mut mass = vec![0.0; plant.n_dof];
+    let y0 = initial_state(&plant)?;
+    let atol = tolerances(&plant);
+    let cycle_s = |rpm: f64| cycle_rad / (rpm * TAU / 60.0);
+    let h_max = cycle_s(from_rpm.max(to_rpm)) / 180.0;
+    let mut solver = {
+        let mut rhs =
+            |t: f64, y: &[f64], dy: &mut [f64]| plant.derivatives(t, y, dy, &profile, &mut mass);
+        Dopri5::new(0.0, y0, h_max / 10.0, h_max, options.rtol, atol, &mut rhs)
+    };
+    let settling = settle(
+        &plant,
+        &profile,
+        &mut mass,
+        &mut solver,
+        cycle_s(from_rpm),
+        options,
+        progress,
+    )?;
+    let t0 = solver.t;
+    if let RunKind::Ramp { .. } = kind {
+        profile = SpeedProfile::ramp(from_rpm, to_rpm, t0, duration_s);
+    }
+    let samples = (duration_s * options.rate_hz).round() as usize;
+    let mut sim = empty_simulation(&plant, samples, settling);
+    let mut state = vec![0.0; plant.state_len];
+    let mut next = 0;
+    let t_end = t0 + duration_s;
+    let mut last_report = 0.0;
+    while next < samples {
+        {
+            let mut rhs = |t: f64, y: &[f64], dy: &mut [f64]| {
+                plant.derivatives(t, y, dy, &profile, &mut mass)
+            };
+            solver.step(t_end + 1.0 / options.rate_hz, &mut rhs)?;
+        }
+        check_state(&plant, solver.t, &solver.y, &profile)?;
+        while next < samples && t0 + next as f64 / options.rate_hz <= solver.t {
+            let t = t0 + next as f64 / options.rate_hz;
+            solver.interpolate(t, &mut state);
+            record(&plant, &profile, t, &state, next, &mut sim);
+            sim.time_s[next] = next as f64 / options.rate_hz;
+            next += 1;
+        }
+        let done = next as f64 / samples as f64;
+        if done - last_report >= 0.005 {
+            last_report = done;
+            if !progress(0.1 + 0.9 * done) {
+                return Err(TransientError::Cancelled { time_s: solver.t });
+            }
+        }
+    }
+    sim.steps = solver.steps;
+    Ok(sim)
+}
+
+/// Integrates whole working cycles until the cycle-to-cycle change of the speeds is below
+/// tolerance (at least three cycles).
+fn settle(
+    plant: &Plant,
+    profile: &SpeedProfile,
+    mass: &mut [f64],
+    solver: &mut Dopri5,
+    cycle_s: f64,
+    options: RunOptions,
+    progress: &mut dyn FnMut(f64) -> bool,
+) -> Result<Settling, TransientError> {
+    let n = plant.n_dof;
+    let mut previous: Vec<f64> = solver.y[n..2 * n].to_vec();
+    let mut settling = Settling {
+        cycles: 0,
+        time_s: 0.0,
+        change: f64::INFINITY,
+        converged: false,
+    };
+    let max_cycles = (options.max_settle_s / cycle_s).ceil().max(3.0) as usize;
+    while settling.cycles < max_cycles {
+        let t_end = solver.t + cycle_s;
+        let mut peak: f64 = 0.0;
+        while solver.t < t_end - 1e-12 * t_end.max(1.0) {
+            let mut rhs =
+                |t: f64, y: &[f64], dy: &mut [f64]| plant.derivatives(t, y, dy, profile, mass);
+            solver.step(t_end, &mut rhs)?;
+            check_state(plant, solver.t, &solver.y, profile)?;
+            peak = solver.y[n..2 * n].iter().fold(peak, |m, v| m.max(v.abs()));
+        }
+        settling.cycles += 1;
+        let scale = peak.max(1e-9 * profile.at(solver.t).1);
+        settling.change = solver.y[n..2 * n]
+            .iter()
+            .zip(&previous)
+            .fold(0.0_f64, |m, (a, b)| m.max((a - b).abs()))
+            / scale;
+        previous.copy_from_slice(&solver.y[n..2 * n]);
+        settling.time_s = solver.t;
+        if !progress(0.1 * settling.cycles as f64 / max_cycles as f64) {
+            return Err(TransientError::Cancelled { time_s: solver.t });
+        }
+        if settling.cycles >= 3 && settling.change < options.settle_tolerance {
+            settling.converged = true;
+            break;
+        }
+    }
+    Ok(settling)
+}
+
+/// Absolute tolerances: angles 1e-8 rad, speeds 1e-6 rad/s, arms 1e-8 rad, 1e-4 °C.
+fn tolerances(plant: &Plant) -> Vec<f64> {
+    let n = plant.n_dof;
+    let mut atol = vec![1e-8; plant.state_len];
+    atol[n..2 * n].fill(1e-6);
+    for e in &plant.elements {
+        if let PlantLaw::Rubber(r) = &e.law
+            && let Temperature::Thermal { state, .. } = r.temperature
+        {
+            atol[state] = 1e-4;
+        }
+    }
+    atol
+}
+
+/// Stops a run whose state is not finite or beyond any physical bound.
+fn check_state(
+    plant: &Plant,
+    t: f64,
+    y: &[f64],
+    profile: &SpeedProfile,
+) -> Result<(), TransientError> {
+    let n = plant.n_dof;
+    let speed_limit = 10.0 * profile.at(t).1 + 1000.0;
+    for (i, &v) in y.iter().enumerate() {
+        let bad = !v.is_finite()
+            || (i >= n && i < 2 * n && v.abs() > speed_limit)
+            || (i < n && v.abs() > 1.0e3);
+        if bad {
+            return Err(TransientError::Diverged {
+                time_s: t,
+                state: state_name(plant, i),
+                value: v,
+            });
+        }
+    }
+    Ok(())
+}
+
+/// A person's name for state `i`.
+fn state_name(plant: &Plant, i: usize) -> String {
+    let n = plant.n_dof;
+    let node_of = |d: usize| {
+        let names: Vec<&str> = plant
+            .system
+            .dof_of_node
+            .iter()
+            .enumerate()
+            .filter(|(_, x)| **x == d)
+            .map(|(k, _)| plant.system.node_names[k].as_str())
+            .collect();
+        names.join("+")
+    };
+    match i {
+        i if i < n => format!("vibration angle of `{}` (rad)", node_of(i)),
+        i if i < 2 * n => format!("vibration speed of `{}` (rad/s)", node_of(i - n)),
+        _ => format!(
+            "rubber internal state #{} (Maxwell arm or temperature)",
+            i - 2 * n
+        ),
+    }
+}
+
+fn empty_simulation(plant: &Plant, samples: usize, settling: Settling) -> Simulation {
+    let sys = &plant.system;
+    let thermal = plant.elements.iter().filter_map(|e| match &e.law {
+        PlantLaw::Rubber(r) if matches!(r.temperature, Temperature::Thermal { .. }) => {
+            Some((e.connection, vec![0.0; samples]))
+        }
+        _ => None,
+    });
+    Simulation {
+        node_names: sys.node_names.clone(),
+        reference_node: sys.reference_node,
+        time_s: vec![0.0; samples],
+        speed_rpm: vec![vec![0.0; samples]; sys.node_names.len()],
+        torque_nm: plant
+            .elements
+            .iter()
+            .map(|e| (e.connection, vec![0.0; samples]))
+            .collect(),
+        temperature_c: thermal.collect(),
+        connection_names: sys.connection_names.clone(),
+        chains: plant
+            .elements
+            .iter()
+            .filter_map(|e| match &e.law {
+                PlantLaw::Rubber(r) => Some((e.connection, r.chain.clone())),
+                _ => None,
+            })
+            .collect(),
+        settling,
+        steps: (0, 0),
+    }
+}
+
+/// Writes sample `k` of every output from state `y` at time `t`.
+fn record(
+    plant: &Plant,
+    profile: &SpeedProfile,
+    t: f64,
+    y: &[f64],
+    k: usize,
+    sim: &mut Simulation,
+) {
+    let n = plant.n_dof;
+    let big_omega = profile.at(t).1;
+    for (node, (&dof, &ratio)) in plant
+        .system
+        .dof_of_node
+        .iter()
+        .zip(&plant.system.speed_ratio)
+        .enumerate()
+    {
+        sim.speed_rpm[node][k] = ratio.abs() * (big_omega + y[n + dof]) * 60.0 / TAU;
+    }
+    for (e, (_, torque)) in plant.elements.iter().zip(sim.torque_nm.iter_mut()) {
+        torque[k] = plant.element_state(e, y, None).torque_ref_nm / e.ratio;
+    }
+    let mut thermal = sim.temperature_c.iter_mut();
+    for e in &plant.elements {
+        if let PlantLaw::Rubber(r) = &e.law
+            && let Temperature::Thermal { state, .. } = r.temperature
+            && let Some((_, temps)) = thermal.next()
+        {
+            temps[k] = y[state];
+        }
+    }
+}

@@ -1,0 +1,194 @@
+//! The time domain against cases with known answers.
+
+use num_complex::Complex64;
+use std::f64::consts::TAU;
+use torsim::model::parse_model;
+use torsim::physics::{Excitation, OperatingPoint, System};
+use torsim::response::forced_response;
+use torsim::transient::dopri::Dopri5;
+use torsim::transient::plant::Plant;
+use torsim::transient::{RunKind, RunOptions, SpeedProfile, simulate};
+
+/// Zero-to-peak amplitude of order `q` in a steady IAS record sampled at `rate_hz` with
+/// reference speed `speed_rpm`, over a whole number of cycles (a plain DFT at one bin).
+fn order_amplitude(signal: &[f64], rate_hz: f64, speed_rpm: f64, q: f64) -> f64 {
+    let omega = q * speed_rpm * TAU / 60.0;
+    let period_s = 2.0 * 60.0 / speed_rpm; // two revolutions: every order k/2 is periodic
+    let cycles = (signal.len() as f64 / rate_hz / period_s).floor();
+    let n = (cycles * period_s * rate_hz).round() as usize;
+    let sum: Complex64 = signal[..n]
+        .iter()
+        .enumerate()
+        .map(|(k, v)| v * Complex64::from_polar(1.0, -omega * k as f64 / rate_hz))
+        .sum();
+    2.0 * sum.norm() / n as f64
+}
+
+const THREE_DOF: &str = r#"format = 1
+name = "linear three-DOF"
+[[inertia]]
+name = "engine"
+inertia = 0.5
+[[inertia]]
+name = "hub"
+inertia = 0.02
+[[inertia]]
+name = "flange"
+inertia = 0.01
+[[connection]]
+kind = "shaft"
+from = "engine"
+to = "hub"
+stiffness = 2.0e5
+damping = 2.0
+[[connection]]
+kind = "shaft"
+from = "hub"
+to = "flange"
+stiffness = 1.0e4
+damping = 1.5
+[[connection]]
+kind = "shaft"
+from = "flange"
+to = "ground"
+stiffness = 1.0e4
+damping = 1.5
+[[harmonic]]
+at = "engine"
+order = 1.0
+amplitude = 100.0
+[[harmonic]]
+at = "engine"
+order = 2.5
+amplitude = 40.0
+phase_deg = 60.0
+"#;
+
+/// A linear model's steady run agrees with the frequency-domain response, order by
+/// order, within 1 % at every node (the issue's bar; measured agreement is far closer,
+/// limited by rtol 1e-6 and the Hermite output).
+#[test]
+fn linear_run_matches_frequency_domain() {
+    let model = parse_model(THREE_DOF, "three.toml").unwrap();
+    let speed_rpm = 1500.0;
+    let options = RunOptions {
+        rate_hz: 4096.0,
+        ..RunOptions::default()
+    };
+    let sim = simulate(
+        &model,
+        RunKind::Steady {
+            speed_rpm,
+            duration_s: 2.0,
+        },
+        options,
+        &mut |_| true,
+    )
+    .unwrap();
+    assert!(sim.settling.converged, "{:?}", sim.settling);
+    let system = System::new(&model, OperatingPoint::default()).unwrap();
+    let excitation = Excitation::new(&model, &system, 1.0, &[1.0, 2.5]);
+    let r = forced_response(&system, &excitation, &[speed_rpm]).unwrap();
+    for node in 0..3 {
+        for (q_index, q) in [1.0, 2.5].into_iter().enumerate() {
+            let time = order_amplitude(&sim.speed_rpm[node], options.rate_hz, speed_rpm, q);
+            let freq = r.ias_amplitude_rpm[node][q_index][0];
+            let err = (time - freq).abs() / freq;
+            assert!(
+                err < 0.01,
+                "node {node} order {q}: time {time} vs frequency {freq} ({:.3} %)",
+                100.0 * err
+            );
+        }
+    }
+}
+
+/// An undamped, unforced grounded chain conserves ½Σ Jω² + ½Σ kΔθ² over 200 periods of
+/// its lowest mode (7000 of its highest) within 1e-6. Dormand–Prince is not symplectic:
+/// its energy drift follows the tolerance (9e-6 at rtol 1e-9, so rtol 1e-11 here).
+#[test]
+fn undamped_free_vibration_conserves_energy() {
+    let text = THREE_DOF
+        .replace("damping = 2.0", "damping = 0.0")
+        .replace("damping = 1.5", "damping = 0.0")
+        .split("[[harmonic]]")
+        .next()
+        .unwrap()
+        .to_string();
+    let model = parse_model(&text, "undamped.toml").unwrap();
+    let plant = Plant::new(&model, 1.0, 1000.0, 1000.0).unwrap();
+    let profile = SpeedProfile::steady(1000.0);
+    let mut mass = vec![0.0; 3];
+    let mut rhs =
+        |t: f64, y: &[f64], dy: &mut [f64]| plant.derivatives(t, y, dy, &profile, &mut mass);
+    let y0 = vec![0.001, -0.002, 0.003, 5.0, -3.0, 1.0];
+    let energy = |y: &[f64]| {
+        let (j, k) = ([0.5, 0.02, 0.01], [2.0e5, 1.0e4, 1.0e4]);
+        let kinetic: f64 = (0..3).map(|i| 0.5 * j[i] * y[3 + i] * y[3 + i]).sum();
+        let twists = [y[0] - y[1], y[1] - y[2], y[2]];
+        kinetic
+            + (0..3)
+                .map(|i| 0.5 * k[i] * twists[i] * twists[i])
+                .sum::<f64>()
+    };
+    let e0 = energy(&y0);
+    let mut d = Dopri5::new(0.0, y0, 1e-5, 1e-3, 1e-11, vec![1e-14; 6], &mut rhs);
+    let t_end = 200.0 / 15.0; // mode 1 is ~15 Hz
+    while d.t < t_end {
+        d.step(t_end, &mut rhs).unwrap();
+    }
+    let drift = (energy(&d.y) - e0).abs() / e0;
+    assert!(drift < 1e-6, "energy drift {drift:e}");
+}
+
+/// One inertia on a rubber stage to ground under a harmonic torque: the steady amplitude
+/// equals T/|c_Tstat·K*(ω) − ω²J| with K* the fitted Maxwell chain's complex stiffness
+/// (within 0.5 %), so the chain is what the integrator solves.
+#[test]
+fn rubber_chain_response_matches_its_complex_stiffness() {
+    let text = r#"format = 1
+name = "rubber 1-DOF"
+[[inertia]]
+name = "a"
+inertia = 0.1
+[[connection]]
+kind = "rubber"
+name = "r"
+from = "a"
+to = "ground"
+stiffness = 1.0e4
+psi = 1.0
+frequency_poly = [-0.000023, 0.01519, 1.0]
+frequency_poly_range = [0.0, 300.0]
+[[harmonic]]
+at = "a"
+order = 1.0
+amplitude = 20.0
+"#;
+    let model = parse_model(text, "r.toml").unwrap();
+    let speed_rpm = 2400.0; // 40 Hz, near the 1-DOF resonance (~55 Hz with α_f)
+    let options = RunOptions {
+        rate_hz: 4096.0,
+        ..RunOptions::default()
+    };
+    let sim = simulate(
+        &model,
+        RunKind::Steady {
+            speed_rpm,
+            duration_s: 2.0,
+        },
+        options,
+        &mut |_| true,
+    )
+    .unwrap();
+    let chain = &sim.chains[0].1;
+    let omega = speed_rpm * TAU / 60.0;
+    let k = 1.0e4 * chain.complex_stiffness(omega / TAU);
+    let theta = 20.0 / (k - Complex64::new(omega * omega * 0.1, 0.0)).norm();
+    let expected_rpm = omega * theta * 60.0 / TAU;
+    let got = order_amplitude(&sim.speed_rpm[0], options.rate_hz, speed_rpm, 1.0);
+    assert!(
+        (got - expected_rpm).abs() / expected_rpm < 0.005,
+        "{got} vs {expected_rpm}"
+    );
+}
