@@ -145,8 +145,8 @@ impl Dopri5 {
             let mut sum = 0.0;
             for i in 0..n {
                 let mut e = E[0] * self.f[i];
-                for j in 1..7 {
-                    e += E[j] * self.k[j - 1][i];
+                for (ej, kj) in E[1..].iter().zip(&self.k) {
+                    e += ej * kj[i];
                 }
                 let scale = self.atol[i] + self.rtol * self.y[i].abs().max(self.y_stage[i].abs());
                 let r = h * e / scale;
