@@ -1,21 +1,33 @@
 //! Times a steady run and a run-up of two presets (release build):
-//! `cargo run --release --example time_runs`.
+//! `cargo run --release --example time_runs [rtol]`.
 use std::time::Instant;
 use torsim::model::{parse_model, presets};
 use torsim::transient::{RunKind, RunOptions, simulate};
 
 fn main() {
+    let rtol: f64 = std::env::args()
+        .nth(1)
+        .and_then(|a| a.parse().ok())
+        .unwrap_or(1e-6);
     let run = |name: &str, kind: RunKind| {
         let preset = presets::preset(name).expect("preset");
         let model = parse_model(preset.text, name).expect("model");
         let start = Instant::now();
-        let sim = simulate(&model, kind, RunOptions::default(), &mut |_| true).expect("run");
+        let options = RunOptions {
+            rtol,
+            ..RunOptions::default()
+        };
+        let sim = simulate(&model, kind, options, &mut |_| true).expect("run");
         let secs = start.elapsed().as_secs_f64();
-        let simulated = sim.settling.time_s + sim.time_s.len() as f64 / 10240.0;
+        let simulated = sim.settling.time_s + sim.time_s.len() as f64 / options.rate_hz;
+        let ias = &sim.speed_rpm[sim.reference_node];
+        let (lo, hi) = ias
+            .iter()
+            .fold((f64::MAX, f64::MIN), |(a, b), &v| (a.min(v), b.max(v)));
         println!(
-            "{name} {kind:?}: {secs:.3} s wall for {simulated:.2} s simulated ({:.0}× real time); settled {:?}; steps {:?}",
+            "{name} {kind:?}: {secs:.3} s wall for {simulated:.2} s simulated ({:.0}× real time); settled in {} cycles; steps {:?}; crank IAS {lo:.2}…{hi:.2} rpm",
             simulated / secs,
-            sim.settling,
+            sim.settling.cycles,
             sim.steps
         );
     };

@@ -108,14 +108,33 @@ impl Plant {
             let m = engine.oscillating_mass_kg;
             let (r, lambda) = (engine.crank_radius_m, engine.lambda);
             let samples = engine.pressure_pa.len() as f64;
+            // The mean angle wrapped to the cycle once, and its sine and cosine: each
+            // cylinder's angle is that plus its DOF's vibration minus its firing angle,
+            // combined by the angle-addition formulas (the vibration angle is small).
+            let phase_m = phi_m.rem_euclid(engine.cycle_rad);
+            let (s_m, c_m) = phase_m.sin_cos();
             for c in &engine.cylinders {
-                let phi = c.ratio * (phi_m + y[c.dof]) - c.firing_rad;
                 let speed = c.ratio * (big_omega + y[n + c.dof]);
-                let (s1, c1) = phi.sin_cos();
+                let (phase, s1, c1) = if c.ratio == 1.0 {
+                    let offset = y[c.dof] - c.firing_rad;
+                    let (s_v, c_v) = small_sin_cos(y[c.dof]);
+                    // sin/cos(φ_m + θ − α) with α's sine and cosine precomputed.
+                    let (s_a, c_a) = (s_m * c_v + c_m * s_v, c_m * c_v - s_m * s_v);
+                    let (s_f, c_f) = c.firing_sin_cos;
+                    (
+                        wrap(phase_m + offset, engine.cycle_rad),
+                        s_a * c_f - c_a * s_f,
+                        c_a * c_f + s_a * s_f,
+                    )
+                } else {
+                    let phi = c.ratio * (phi_m + y[c.dof]) - c.firing_rad;
+                    let (s1, c1) = phi.sin_cos();
+                    (phi.rem_euclid(engine.cycle_rad), s1, c1)
+                };
                 let (s2, c2) = (2.0 * s1 * c1, c1 * c1 - s1 * s1);
                 let rv = r * (s1 + 0.5 * lambda * s2);
                 let ra = r * (c1 + lambda * c2);
-                let x = phi.rem_euclid(engine.cycle_rad) / engine.cycle_rad * samples;
+                let x = phase / engine.cycle_rad * samples;
                 let k = (x as usize).min(engine.pressure_pa.len() - 1);
                 let next = engine.pressure_pa[(k + 1) % engine.pressure_pa.len()];
                 let p = engine.pressure_pa[k] + (x - k as f64) * (next - engine.pressure_pa[k]);
@@ -144,6 +163,64 @@ impl Plant {
         for i in 0..n {
             dy[n + i] = dy[n + i] / mass[i] - alpha;
         }
+    }
+}
+
+/// `x` wrapped into `[0, cycle)` when it is within one cycle of it (the usual case).
+fn wrap(x: f64, cycle: f64) -> f64 {
+    if x < 0.0 {
+        if x + cycle >= 0.0 {
+            x + cycle
+        } else {
+            x.rem_euclid(cycle)
+        }
+    } else if x >= cycle {
+        if x - cycle < cycle {
+            x - cycle
+        } else {
+            x.rem_euclid(cycle)
+        }
+    } else {
+        x
+    }
+}
+
+/// Sine and cosine of a vibration angle: a Taylor series through x¹¹/x¹² for |x| < 0.25
+/// rad (truncation below 2e-17 relative), the library call beyond.
+fn small_sin_cos(x: f64) -> (f64, f64) {
+    if x.abs() >= 0.25 {
+        return x.sin_cos();
+    }
+    let x2 = x * x;
+    let s = x
+        * (1.0
+            - x2 / 6.0
+                * (1.0 - x2 / 20.0 * (1.0 - x2 / 42.0 * (1.0 - x2 / 72.0 * (1.0 - x2 / 110.0)))));
+    let c = 1.0
+        - x2 / 2.0
+            * (1.0
+                - x2 / 12.0
+                    * (1.0
+                        - x2 / 30.0 * (1.0 - x2 / 56.0 * (1.0 - x2 / 90.0 * (1.0 - x2 / 132.0)))));
+    (s, c)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn small_sin_cos_matches_the_library() {
+        for i in -1000..=1000 {
+            let x = 0.3 * i as f64 / 1000.0;
+            let (s, c) = small_sin_cos(x);
+            assert!(
+                (s - x.sin()).abs() < 2e-16 && (c - x.cos()).abs() < 2e-16,
+                "{x}"
+            );
+        }
+        assert!((wrap(-0.5, 4.0) - 3.5).abs() < 1e-15 && (wrap(4.5, 4.0) - 0.5).abs() < 1e-15);
+        assert!((wrap(-9.0, 4.0) - 3.0).abs() < 1e-15 && (wrap(13.0, 4.0) - 1.0).abs() < 1e-15);
     }
 }
 

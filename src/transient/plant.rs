@@ -98,6 +98,8 @@ pub struct Cylinder {
     pub ratio: f64,
     /// Firing angle after cylinder 1, rad.
     pub firing_rad: f64,
+    /// Its sine and cosine.
+    pub firing_sin_cos: (f64, f64),
 }
 
 /// The engine's per-cylinder constants (seed 001 eq. 3–4).
@@ -308,6 +310,7 @@ impl Plant {
                         dof: system.dof_of_node[node],
                         ratio: system.speed_ratio[node],
                         firing_rad: a.to_radians(),
+                        firing_sin_cos: a.to_radians().sin_cos(),
                     })
                 })
                 .collect();

@@ -42,7 +42,8 @@ pub struct RunOptions {
     /// Relative tolerance of the integrator (default 1e-6).
     pub rtol: f64,
     /// Cycle-to-cycle change of the speeds, relative to their vibration amplitude, below
-    /// which a run counts as settled (default 1e-4).
+    /// which a run counts as settled (default 1e-4; never below 20 × `rtol`, the noise
+    /// floor of the integration).
     pub settle_tolerance: f64,
     /// Longest settling time before recording anyway, s (default 60).
     pub max_settle_s: f64,
@@ -235,7 +236,8 @@ fn settle(
         if !progress(0.1 * settling.cycles as f64 / max_cycles as f64) {
             return Err(TransientError::Cancelled { time_s: solver.t });
         }
-        if settling.cycles >= 3 && settling.change < options.settle_tolerance {
+        // Integration error makes the change noisy at ~rtol: never ask for less than 20×.
+        if settling.cycles >= 3 && settling.change < options.settle_tolerance.max(20.0 * options.rtol) {
             settling.converged = true;
             break;
         }
