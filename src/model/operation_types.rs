@@ -19,6 +19,20 @@ pub struct Operation {
     /// Orders to draw and sum; `None`: all multiples of 0.5 up to 12 (4-stroke) or of 1
     /// up to 12 (2-stroke).
     pub orders: Option<Vec<f64>>,
+    /// Named steady regimes (extension key `regimes`), e.g. seed 001's A–F: what
+    /// `torsim compare` runs by default.
+    pub regimes: Vec<Regime>,
+}
+
+/// A named steady operating point, `{ label = "A", speed_rpm = 3000, load = 1 }`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Regime {
+    /// Name, e.g. `A` or `Regime A`.
+    pub label: String,
+    /// Mean speed of the reference node, rpm.
+    pub speed_rpm: f64,
+    /// Engine load 0..1 (default 1).
+    pub load: f64,
 }
 
 /// `[expect]`: checks for `torsim check`.

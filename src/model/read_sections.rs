@@ -5,7 +5,7 @@ use super::error::ModelError;
 use super::spanned::{Tab, wrong_type};
 use super::{
     CriticalExpectation, Engine, Expect, Harmonic, HarmonicAmplitude, Load, LoadPressure,
-    ModeExpectation, Operation, Pressure, PressureCurve,
+    ModeExpectation, Operation, Pressure, PressureCurve, Regime,
 };
 
 pub(super) fn engine(t: &Tab) -> Result<Engine, ModelError> {
@@ -115,11 +115,29 @@ pub(super) fn load(t: &Tab) -> Result<Load, ModelError> {
 }
 
 pub(super) fn operation(t: &Tab) -> Result<Operation, ModelError> {
-    t.allow(&["speed_range_rpm", "operating_range_rpm", "orders"])?;
+    t.allow(&[
+        "speed_range_rpm",
+        "operating_range_rpm",
+        "orders",
+        "regimes",
+    ])?;
+    let regimes = t
+        .list("regimes")?
+        .iter()
+        .map(|r| {
+            r.allow(&["label", "speed_rpm", "load"])?;
+            Ok(Regime {
+                label: r.str("label")?,
+                speed_rpm: r.f64("speed_rpm")?,
+                load: r.opt_f64("load")?.unwrap_or(1.0),
+            })
+        })
+        .collect::<Result<Vec<_>, ModelError>>()?;
     Ok(Operation {
         speed_range_rpm: t.opt_array::<2>("speed_range_rpm")?,
         operating_range_rpm: t.opt_array::<2>("operating_range_rpm")?,
         orders: t.opt_f64s("orders")?,
+        regimes,
     })
 }
 

@@ -189,6 +189,15 @@ pub(crate) fn operation_and_expect(model: &Model) -> Check {
     for (i, q) in op.orders.iter().flatten().enumerate() {
         positive(&format!("operation.orders[{i}]"), *q)?;
     }
+    for (i, r) in op.regimes.iter().enumerate() {
+        positive(&format!("operation.regimes[{i}].speed_rpm"), r.speed_rpm)?;
+        if !(0.0..=1.0).contains(&r.load) {
+            fail(
+                format!("operation.regimes[{i}].load"),
+                "must be within 0 … 1",
+            )?;
+        }
+    }
     let ex = &model.expect;
     for (i, m) in ex.mode_hz.iter().enumerate() {
         let key = format!("expect.mode_hz[{i}]");

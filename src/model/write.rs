@@ -283,6 +283,24 @@ fn operation(out: &mut String, op: &Operation) {
     if let Some(orders) = &op.orders {
         kv(out, "orders", nums(orders, 0, 9));
     }
+    if !op.regimes.is_empty() {
+        let rows: Vec<String> = op
+            .regimes
+            .iter()
+            .map(|r| {
+                let label = toml_edit::Value::from(r.label.as_str()).to_string();
+                let mut fields = vec![
+                    ("label", label.trim().to_string()),
+                    ("speed_rpm", num(r.speed_rpm)),
+                ];
+                if r.load != 1.0 {
+                    fields.push(("load", num(r.load)));
+                }
+                format!("    {},\n", inline(&fields))
+            })
+            .collect();
+        kv(out, "regimes", format!("[\n{}]", rows.concat()));
+    }
 }
 
 fn expect(out: &mut String, ex: &Expect) {

@@ -87,6 +87,9 @@ pub struct Simulation {
     pub speed_rpm: Vec<Vec<f64>>,
     /// Torque of every connection with an element, own shaft, N·m: `(connection, samples)`.
     pub torque_nm: Vec<(usize, Vec<f64>)>,
+    /// Mean power dissipated in every connection with an element over the recording, W:
+    /// `(connection, W)` — rubber in its Maxwell arms, shafts in their dampers.
+    pub power_loss_w: Vec<(usize, f64)>,
     /// Temperature of every rubber stage with `thermal`, °C: `(connection, samples)`.
     pub temperature_c: Vec<(usize, Vec<f64>)>,
     /// Connection names, model order.
@@ -237,7 +240,9 @@ fn settle(
             return Err(TransientError::Cancelled { time_s: solver.t });
         }
         // Integration error makes the change noisy at ~rtol: never ask for less than 20×.
-        if settling.cycles >= 3 && settling.change < options.settle_tolerance.max(20.0 * options.rtol) {
+        if settling.cycles >= 3
+            && settling.change < options.settle_tolerance.max(20.0 * options.rtol)
+        {
             settling.converged = true;
             break;
         }
@@ -326,6 +331,7 @@ fn empty_simulation(plant: &Plant, samples: usize, settling: Settling) -> Simula
             .iter()
             .map(|e| (e.connection, vec![0.0; samples]))
             .collect(),
+        power_loss_w: plant.elements.iter().map(|e| (e.connection, 0.0)).collect(),
         temperature_c: thermal.collect(),
         connection_names: sys.connection_names.clone(),
         chains: plant
@@ -361,8 +367,12 @@ fn record(
     {
         sim.speed_rpm[node][k] = ratio.abs() * (big_omega + y[n + dof]) * 60.0 / TAU;
     }
-    for (e, (_, torque)) in plant.elements.iter().zip(sim.torque_nm.iter_mut()) {
-        torque[k] = plant.element_state(e, y, None).torque_ref_nm / e.ratio;
+    let samples = sim.time_s.len() as f64;
+    let outputs = sim.torque_nm.iter_mut().zip(sim.power_loss_w.iter_mut());
+    for (e, ((_, torque), (_, power))) in plant.elements.iter().zip(outputs) {
+        let state = plant.element_state(e, y, None);
+        torque[k] = state.torque_ref_nm / e.ratio;
+        *power += state.power_w / samples;
     }
     let mut thermal = sim.temperature_c.iter_mut();
     for e in &plant.elements {
