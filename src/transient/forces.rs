@@ -205,25 +205,6 @@ fn small_sin_cos(x: f64) -> (f64, f64) {
     (s, c)
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn small_sin_cos_matches_the_library() {
-        for i in -1000..=1000 {
-            let x = 0.3 * i as f64 / 1000.0;
-            let (s, c) = small_sin_cos(x);
-            assert!(
-                (s - x.sin()).abs() < 2e-16 && (c - x.cos()).abs() < 2e-16,
-                "{x}"
-            );
-        }
-        assert!((wrap(-0.5, 4.0) - 3.5).abs() < 1e-15 && (wrap(4.5, 4.0) - 0.5).abs() < 1e-15);
-        assert!((wrap(-9.0, 4.0) - 3.0).abs() < 1e-15 && (wrap(13.0, 4.0) - 1.0).abs() < 1e-15);
-    }
-}
-
 /// Secant amplitude factor, temperature factors and the chain: the stage's torque (own
 /// shaft) is `c_Tstat·α_x(x)·α_Tc(T)·[k∞ φ + α_Tξ(T) Σ k_j (φ − q_j)]` (seed 000 eq. 1–2,
 /// 10–15 with the causal chain of [`super::maxwell`]).
@@ -266,5 +247,24 @@ fn rubber_state(
     ElementState {
         torque_ref_nm: torque_own * ratio,
         power_w: scale * alpha_txi * arms_power,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn small_sin_cos_matches_the_library() {
+        for i in -1000..=1000 {
+            let x = 0.3 * i as f64 / 1000.0;
+            let (s, c) = small_sin_cos(x);
+            assert!(
+                (s - x.sin()).abs() < 2e-16 && (c - x.cos()).abs() < 2e-16,
+                "{x}"
+            );
+        }
+        assert!((wrap(-0.5, 4.0) - 3.5).abs() < 1e-15 && (wrap(4.5, 4.0) - 0.5).abs() < 1e-15);
+        assert!((wrap(-9.0, 4.0) - 3.0).abs() < 1e-15 && (wrap(13.0, 4.0) - 1.0).abs() < 1e-15);
     }
 }
