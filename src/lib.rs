@@ -20,6 +20,12 @@
 //!   and damping ratios, the Campbell diagram and its crossings.
 //! - [`response`] — steady forced response order by order over a speed sweep: IAS per
 //!   node, torque per connection, peak torque over a cycle, DIN 740 power loss.
+//! - [`recording`] — bench and simulated recordings (`spec/recording-format.md`): a CSV
+//!   of IAS per station in time and its TOML sidecar; reading with errors that name file,
+//!   line and column; atomic writing.
+//! - [`signal`] — order analysis of a recording: resampling to the reference shaft's
+//!   angle (band-limited), synchronous averaging per working cycle, order spectrum, RMS,
+//!   irregularity ratio, relative speed between stations, STFT of run-ups.
 //! - [`check`] — the `[expect]` checks that `torsim check` runs on presets.
 //!
 //! ## Example
@@ -44,4 +50,6 @@ pub mod check;
 pub mod modal;
 pub mod model;
 pub mod physics;
+pub mod recording;
 pub mod response;
+pub mod signal;
