@@ -158,7 +158,7 @@ pub fn parse_recording(
     };
     let revs = revolutions(&recording.time_s, n_ref);
     let needed = 2.0 * recording.meta.cycle_rev();
-    if !(revs >= needed) {
+    if revs < needed || revs.is_nan() {
         let reason = Reason::TooShort {
             revolutions: revs,
             needed,

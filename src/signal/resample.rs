@@ -110,7 +110,7 @@ pub fn angle_grid(
     cycle_rev: f64,
 ) -> Result<AngleGrid, SignalError> {
     let dt = uniform_interval(time_s)?;
-    if let Some(k) = reference_rpm.iter().position(|&n| !(n > 0.0)) {
+    if let Some(k) = reference_rpm.iter().position(|&n| n <= 0.0 || n.is_nan()) {
         return Err(SignalError::NonPositiveSpeed { time_s: time_s[k] });
     }
     let n = time_s.len();
