@@ -20,6 +20,15 @@
 //!   and damping ratios, the Campbell diagram and its crossings.
 //! - [`response`] — steady forced response order by order over a speed sweep: IAS per
 //!   node, torque per connection, peak torque over a cycle, DIN 740 power loss.
+//! - [`recording`] — bench and simulated recordings (`spec/recording-format.md`): a CSV
+//!   of IAS per station in time and its TOML sidecar; reading with errors that name file,
+//!   line and column; atomic writing.
+//! - [`signal`] — order analysis of a recording: resampling to the reference shaft's
+//!   angle (band-limited), synchronous averaging per working cycle, order spectrum, RMS,
+//!   irregularity ratio, relative speed between stations, STFT of run-ups.
+//! - [`transient`] — the nonlinear time domain: crank-angle-dependent engine inertia,
+//!   secant rubber stiffness with a causal Maxwell chain and self-heating, gear backlash;
+//!   Dormand–Prince integration; steady runs settled cycle by cycle, and run-ups.
 //! - [`check`] — the `[expect]` checks that `torsim check` runs on presets.
 //!
 //! ## Example
@@ -44,5 +53,7 @@ pub mod check;
 pub mod modal;
 pub mod model;
 pub mod physics;
+pub mod recording;
 pub mod response;
+pub mod signal;
 pub mod transient;

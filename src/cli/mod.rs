@@ -1,6 +1,7 @@
 //! The commands of `spec/cli.md`: thin wrappers that parse options, call the library and
 //! print a table or one JSON document.
 
+mod analyse;
 mod campbell;
 mod check;
 mod coupling;
@@ -77,6 +78,14 @@ pub enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// Order analysis of a recording: RMS, irregularity ratio, orders, STFT of run-ups.
+    Analyse {
+        /// The recording's CSV (its sidecar, same stem `.toml`, beside it).
+        recording: String,
+        /// Print one JSON document.
+        #[arg(long)]
+        json: bool,
+    },
     /// Each rubber stage's dynamic stiffness and damping by the seed 000 law.
     Coupling {
         /// Model file or preset:NAME.
@@ -122,6 +131,7 @@ pub fn run(cli: Cli) -> Result<(), CliError> {
             json,
         }) => response::run(&sweep, orders, json),
         Some(Command::Check { presets, json }) => check::run(&presets, json),
+        Some(Command::Analyse { recording, json }) => analyse::run(&recording, json),
         Some(Command::Coupling {
             model,
             frequency_hz,

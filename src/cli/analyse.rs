@@ -1,0 +1,132 @@
+//! `torsim analyse RECORDING.csv [--json]`: order analysis of a recording or a simulated
+//! CSV (the sidecar beside it): RMS, irregularity ratio and order amplitudes per station
+//! and per pair of stations, and for run-ups the STFT with order tracks.
+
+use super::error::CliError;
+use super::format::{emit, number, numbers, order_key, outln, print_json, table};
+use serde_json::{Map, Value, json};
+use std::path::Path;
+use torsim::recording::read_recording;
+use torsim::signal::{Analysis, StationAnalysis, analyse};
+
+/// Runs the command.
+pub fn run(recording: &str, json: bool) -> Result<(), CliError> {
+    let rec = read_recording(Path::new(recording), None).map_err(CliError::input)?;
+    let analysis =
+        analyse(&rec).map_err(|e| CliError::input(anyhow::anyhow!("{recording}: {e}")))?;
+    if json {
+        return print_json(&to_json(&analysis)?);
+    }
+    let mut text = String::new();
+    outln!(
+        text,
+        "{recording} — {} run, reference `{}`, {} cycles averaged; orders zero-to-peak [rpm]",
+        analysis.kind.as_str(),
+        analysis.reference,
+        analysis.cycles
+    );
+    let signals: Vec<&StationAnalysis> = analysis.stations.iter().chain(&analysis.n_rel).collect();
+    let mut header = vec!["".to_string()];
+    header.extend(signals.iter().map(|s| s.name.clone()));
+    let mut rows = vec![
+        row("mean [rpm]", &signals, |s| {
+            format!("{:.2}", s.mean_speed_rpm)
+        }),
+        row("RMS [rpm]", &signals, |s| format!("{:.3}", s.rms_rpm)),
+        row("IR [%]", &signals, |s| format!("{:.3}", s.irregularity_pct)),
+    ];
+    let orders: Vec<f64> = signals
+        .first()
+        .map(|s| s.orders.iter().map(|o| o.order).collect())
+        .unwrap_or_default();
+    for (i, q) in orders.iter().enumerate() {
+        rows.push(row(&format!("order {}", order_key(*q)), &signals, |s| {
+            format!("{:.3}", s.orders[i].amplitude)
+        }));
+    }
+    text += &table(&header, &rows);
+    if let Some(axes) = &analysis.stft {
+        outln!(
+            text,
+            "STFT: {} windows of {:.3} s, {:.0} … {:.0} rpm (see --json for the tracks)",
+            axes.times_s.len(),
+            axes.frequencies_hz.get(1).map_or(0.0, |df| 1.0 / df),
+            axes.speeds_rpm.first().copied().unwrap_or(0.0),
+            axes.speeds_rpm.last().copied().unwrap_or(0.0)
+        );
+    }
+    emit(&text)
+}
+
+fn row(
+    label: &str,
+    signals: &[&StationAnalysis],
+    cell: impl Fn(&StationAnalysis) -> String,
+) -> Vec<String> {
+    std::iter::once(label.to_string())
+        .chain(signals.iter().map(|s| cell(s)))
+        .collect()
+}
+
+/// The `analyse --json` document: the keys of `simulate` (`rms_rpm`, `irregularity_pct`,
+/// `orders`) plus `mean_speed_rpm`, `n_rel` and, for run-ups, `stft`.
+pub fn to_json(analysis: &Analysis) -> Result<Value, CliError> {
+    let mut doc = stats_json(&analysis.stations)?;
+    doc.insert("reference".into(), json!(analysis.reference));
+    doc.insert("kind".into(), json!(analysis.kind.as_str()));
+    doc.insert("cycles".into(), json!(analysis.cycles));
+    doc.insert("n_rel".into(), Value::Object(stats_json(&analysis.n_rel)?));
+    if let Some(axes) = &analysis.stft {
+        let mut stations = Map::new();
+        for s in analysis.stations.iter().chain(&analysis.n_rel) {
+            let Some(st) = &s.stft else { continue };
+            let mut tracks = Map::new();
+            for (q, track) in axes.orders.iter().zip(&st.order_tracks_rpm) {
+                tracks.insert(order_key(*q), numbers(track, "order track")?);
+            }
+            let magnitude = st
+                .magnitude_rpm
+                .iter()
+                .map(|m| numbers(m, "STFT magnitude"))
+                .collect::<Result<Vec<_>, _>>()?;
+            stations.insert(
+                s.name.clone(),
+                json!({ "order_tracks_rpm": tracks, "magnitude_rpm": magnitude }),
+            );
+        }
+        doc.insert(
+            "stft".into(),
+            json!({
+                "times_s": numbers(&axes.times_s, "STFT time")?,
+                "speeds_rpm": numbers(&axes.speeds_rpm, "STFT speed")?,
+                "frequencies_hz": numbers(&axes.frequencies_hz, "STFT frequency")?,
+                "stations": stations,
+            }),
+        );
+    }
+    Ok(Value::Object(doc))
+}
+
+/// `{"rms_rpm":{name:…},"irregularity_pct":{…},"orders":{name:{order:…}},"mean_speed_rpm":{…}}`.
+fn stats_json(signals: &[StationAnalysis]) -> Result<Map<String, Value>, CliError> {
+    let (mut rms, mut ir, mut orders, mut mean) = (Map::new(), Map::new(), Map::new(), Map::new());
+    for s in signals {
+        rms.insert(s.name.clone(), number(s.rms_rpm, "RMS")?);
+        ir.insert(
+            s.name.clone(),
+            number(s.irregularity_pct, "irregularity ratio")?,
+        );
+        mean.insert(s.name.clone(), number(s.mean_speed_rpm, "mean speed")?);
+        let mut by_order = Map::new();
+        for o in &s.orders {
+            by_order.insert(order_key(o.order), number(o.amplitude, "order amplitude")?);
+        }
+        orders.insert(s.name.clone(), Value::Object(by_order));
+    }
+    let mut doc = Map::new();
+    doc.insert("rms_rpm".into(), Value::Object(rms));
+    doc.insert("irregularity_pct".into(), Value::Object(ir));
+    doc.insert("orders".into(), Value::Object(orders));
+    doc.insert("mean_speed_rpm".into(), Value::Object(mean));
+    Ok(doc)
+}

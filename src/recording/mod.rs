@@ -1,0 +1,16 @@
+//! Recordings (`spec/recording-format.md`): IAS per station sampled in time, in a CSV
+//! with a TOML sidecar of the same stem. [`read_recording`] reads and checks one, with
+//! errors that name the file, the line, the column and the reason ([`RecordingError`]);
+//! [`write_recording`] writes one atomically (the simulator's `--csv`).
+
+pub mod error;
+pub mod read;
+pub mod sidecar;
+pub mod types;
+pub mod write;
+
+pub use error::{Reason, RecordingError};
+pub use read::{parse_recording, read_recording, sidecar_path};
+pub use sidecar::{parse_sidecar, sidecar_string};
+pub use types::*;
+pub use write::{check_recording, csv_string, write_recording};

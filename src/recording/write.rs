@@ -1,0 +1,97 @@
+//! Writing recordings: the CSV and its sidecar, each atomically (a temporary file in the
+//! same directory, renamed over the target once complete). Numbers are written in Rust's
+//! shortest round-trip form, so [`read_recording`](super::read_recording) reads them back
+//! bit-identical; non-finite samples are refused (an output file never holds NaN).
+
+use std::io::Write;
+use std::path::Path;
+
+use super::error::{Reason, RecordingError};
+use super::read::sidecar_path;
+use super::sidecar::sidecar_string;
+use super::types::Recording;
+
+/// Checks that every channel has one finite sample per time stamp and that time
+/// increases; the error names the column and the 1-based CSV line (header = line 1).
+pub fn check_recording(recording: &Recording, file: &str) -> Result<(), RecordingError> {
+    let n = recording.time_s.len();
+    let bad = |reason| RecordingError::new(file, reason);
+    if n == 0 {
+        return Err(bad(Reason::Inconsistent("no samples".into())));
+    }
+    let columns = std::iter::once(("time_s", &recording.time_s)).chain(
+        recording
+            .channels
+            .iter()
+            .map(|c| (c.column.as_str(), &c.values)),
+    );
+    for (name, values) in columns {
+        if values.len() != n {
+            let message = format!("{} samples, `time_s` has {n}", values.len());
+            return Err(bad(Reason::Inconsistent(message)).at_key(name));
+        }
+        if let Some(i) = values.iter().position(|v| !v.is_finite()) {
+            return Err(bad(Reason::NotFinite(format!("{}", values[i])))
+                .at_line(i + 2)
+                .at_key(name));
+        }
+    }
+    if let Some(i) = recording.time_s.windows(2).position(|w| w[1] <= w[0]) {
+        let t = &recording.time_s;
+        let reason = Reason::TimeNotIncreasing {
+            time_s: t[i + 1],
+            previous_s: t[i],
+        };
+        return Err(bad(reason).at_line(i + 3).at_key("time_s"));
+    }
+    Ok(())
+}
+
+/// The CSV text of a recording (header `time_s,<columns>`, one row per sample).
+pub fn csv_string(recording: &Recording) -> String {
+    use std::fmt::Write as _;
+    let width = 1 + recording.channels.len();
+    let mut out = String::with_capacity(recording.time_s.len() * width * 20);
+    out.push_str("time_s");
+    for c in &recording.channels {
+        out.push(',');
+        out.push_str(&c.column);
+    }
+    out.push('\n');
+    for (i, t) in recording.time_s.iter().enumerate() {
+        let _ = write!(out, "{t}");
+        for c in &recording.channels {
+            let _ = write!(out, ",{}", c.values[i]);
+        }
+        out.push('\n');
+    }
+    out
+}
+
+/// Writes `text` to `path` atomically.
+fn write_atomic(path: &Path, text: &str) -> Result<(), RecordingError> {
+    let file = path.display().to_string();
+    let name = path
+        .file_name()
+        .map_or_else(|| "recording".into(), |n| n.to_string_lossy().into_owned());
+    let tmp = path.with_file_name(format!(".{name}.{}.tmp", std::process::id()));
+    let result = (|| {
+        let mut f = std::fs::File::create(&tmp)?;
+        f.write_all(text.as_bytes())?;
+        f.sync_all()?;
+        std::fs::rename(&tmp, path)
+    })();
+    result.map_err(|e| {
+        let _ = std::fs::remove_file(&tmp);
+        RecordingError::new(file, Reason::Io(format!("cannot write: {e}")))
+    })
+}
+
+/// Writes the recording to `csv_path` and its sidecar beside it (same stem, `.toml`),
+/// each atomically. Refuses channels of the wrong length, non-finite samples and time
+/// that does not increase, before writing anything.
+pub fn write_recording(recording: &Recording, csv_path: &Path) -> Result<(), RecordingError> {
+    check_recording(recording, &csv_path.display().to_string())?;
+    write_atomic(csv_path, &csv_string(recording))?;
+    write_atomic(&sidecar_path(csv_path), &sidecar_string(&recording.meta))
+}

@@ -1,0 +1,192 @@
+//! Resampling to the reference shaft's angle (order tracking).
+//!
+//! The reference angle is the integral of the reference speed, taken on the band-limited
+//! interpolant of its samples (exact for band-limited signals, where the trapezoid rule
+//! misses 30 % of an order that has 3.4 samples per period). For each target angle the
+//! time is found by inverting the angle (monotonic: the reference speed is > 0) with a
+//! cubic Hermite between samples, whose end slopes are the measured speeds. A station's
+//! signal is then evaluated at those times with the windowed-sinc interpolant
+//! ([`kernel`](super::kernel)).
+//!
+//! Angle zero is the reference angle at the first sample; the grid starts at the first
+//! whole working cycle after the kernel's half-width, so cycle `c` covers
+//! `[c0 + c, c0 + c + 1)` cycles from angle zero, and order phases refer to the first
+//! sample.
+
+use super::SignalError;
+use super::kernel::{self, HALF_WIDTH};
+
+/// Resampling points per revolution of the reference shaft: order 24 gets 10.7 points
+/// per period, a 4-stroke cycle 512 points (a power of two for the FFT).
+pub const SAMPLES_PER_REV: usize = 256;
+
+/// How to evaluate a station's signal between its samples.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Interpolation {
+    /// Kaiser-windowed sinc, ±16 samples (the default).
+    BandLimited,
+    /// Linear: loses 6 % of an order with 7 samples per period. For comparison only.
+    Linear,
+}
+
+/// A uniform grid of the reference shaft's angle and where each point falls in time.
+#[derive(Debug, Clone, PartialEq)]
+pub struct AngleGrid {
+    /// Points per revolution of the reference shaft.
+    pub samples_per_rev: usize,
+    /// Points per working cycle.
+    pub samples_per_cycle: usize,
+    /// Whole working cycles on the grid.
+    pub cycles: usize,
+    /// Reference angle of the first point, rev from the first sample (a whole number of
+    /// cycles).
+    pub start_rev: f64,
+    /// Fractional sample index of each point (`(t − t₀) / Δt`).
+    pub positions: Vec<f64>,
+    /// Sampling interval of the recording, s.
+    pub dt_s: f64,
+    /// Time of the first sample, s.
+    pub t0_s: f64,
+    /// Reference angle at each sample of the recording, rev from the first.
+    pub sample_angle_rev: Vec<f64>,
+}
+
+impl AngleGrid {
+    /// Position of each recording sample on the grid, in cycles from its start.
+    pub fn sample_cycles(&self) -> Vec<f64> {
+        let cycle_rev = self.samples_per_cycle as f64 / self.samples_per_rev as f64;
+        self.sample_angle_rev
+            .iter()
+            .map(|a| (a - self.start_rev) / cycle_rev)
+            .collect()
+    }
+
+    /// Time of each grid point, s.
+    pub fn times_s(&self) -> Vec<f64> {
+        self.positions
+            .iter()
+            .map(|p| self.t0_s + p * self.dt_s)
+            .collect()
+    }
+}
+
+/// The sampling interval, s, when `time_s` is uniform to within 0.1 % of it.
+pub fn uniform_interval(time_s: &[f64]) -> Result<f64, SignalError> {
+    let n = time_s.len();
+    if n < 2 {
+        return Err(SignalError::TooShort { cycles: 0.0 });
+    }
+    let dt = (time_s[n - 1] - time_s[0]) / (n - 1) as f64;
+    for (k, &t) in time_s.iter().enumerate() {
+        if (t - time_s[0] - k as f64 * dt).abs() > 1e-3 * dt {
+            return Err(SignalError::NonUniform {
+                time_s: t,
+                dt_s: dt,
+            });
+        }
+    }
+    Ok(dt)
+}
+
+/// Reference angle at each sample, rev (0 at the first), from the speed in rpm.
+pub fn reference_angle_rev(speed_rpm: &[f64], dt_s: f64) -> Vec<f64> {
+    let mut angle = Vec::with_capacity(speed_rpm.len());
+    let mut theta = 0.0;
+    angle.push(theta);
+    for k in 0..speed_rpm.len().saturating_sub(1) {
+        theta += kernel::integrate_interval(speed_rpm, k) * dt_s / 60.0;
+        angle.push(theta);
+    }
+    angle
+}
+
+/// The angle grid of the reference shaft: `samples_per_rev` points per revolution over
+/// the whole working cycles (`cycle_rev` revolutions each) that the recording covers
+/// away from its ends.
+pub fn angle_grid(
+    time_s: &[f64],
+    reference_rpm: &[f64],
+    samples_per_rev: usize,
+    cycle_rev: f64,
+) -> Result<AngleGrid, SignalError> {
+    let dt = uniform_interval(time_s)?;
+    if let Some(k) = reference_rpm.iter().position(|&n| n <= 0.0 || n.is_nan()) {
+        return Err(SignalError::NonPositiveSpeed { time_s: time_s[k] });
+    }
+    let n = time_s.len();
+    if n < 2 * HALF_WIDTH + 2 {
+        return Err(SignalError::TooShort { cycles: 0.0 });
+    }
+    let theta = reference_angle_rev(reference_rpm, dt);
+    let (lo, hi) = (theta[HALF_WIDTH], theta[n - 1 - HALF_WIDTH]);
+    let first_cycle = (lo / cycle_rev).ceil();
+    let start_rev = first_cycle * cycle_rev;
+    let cycles_f = ((hi - start_rev) / cycle_rev).floor();
+    if cycles_f < 1.0 {
+        return Err(SignalError::TooShort {
+            cycles: ((hi - lo) / cycle_rev).max(0.0),
+        });
+    }
+    let cycles = cycles_f as usize;
+    let samples_per_cycle = (samples_per_rev as f64 * cycle_rev).round() as usize;
+    let total = cycles * samples_per_cycle;
+    let mut positions = Vec::with_capacity(total);
+    let mut k = HALF_WIDTH;
+    for i in 0..total {
+        let target = start_rev + (i as f64) * cycle_rev / samples_per_cycle as f64;
+        while k + 2 < n && theta[k + 1] <= target {
+            k += 1;
+        }
+        let d0 = reference_rpm[k] * dt / 60.0;
+        let d1 = reference_rpm[k + 1] * dt / 60.0;
+        positions.push(k as f64 + hermite_inverse(theta[k], theta[k + 1], d0, d1, target));
+    }
+    Ok(AngleGrid {
+        samples_per_rev,
+        samples_per_cycle,
+        cycles,
+        start_rev,
+        positions,
+        dt_s: dt,
+        t0_s: time_s[0],
+        sample_angle_rev: theta,
+    })
+}
+
+/// The `u` in [0, 1] where the cubic Hermite through (0, `y0`, slope `d0`) and
+/// (1, `y1`, slope `d1`) equals `target`: Newton from the linear guess, kept in range.
+fn hermite_inverse(y0: f64, y1: f64, d0: f64, d1: f64, target: f64) -> f64 {
+    let dy = y1 - y0;
+    let mut u = ((target - y0) / dy).clamp(0.0, 1.0);
+    for _ in 0..8 {
+        let (u2, u3) = (u * u, u * u * u);
+        let value = y0 + d0 * (u3 - 2.0 * u2 + u) + dy * (3.0 * u2 - 2.0 * u3) + d1 * (u3 - u2);
+        let slope =
+            d0 * (3.0 * u2 - 4.0 * u + 1.0) + dy * (6.0 * u - 6.0 * u2) + d1 * (3.0 * u2 - 2.0 * u);
+        if slope <= 0.0 {
+            break;
+        }
+        let step = (value - target) / slope;
+        u = (u - step).clamp(0.0, 1.0);
+        if step.abs() < 1e-14 {
+            break;
+        }
+    }
+    u
+}
+
+/// A station's signal on the angle grid.
+pub fn resample(grid: &AngleGrid, values: &[f64], how: Interpolation) -> Vec<f64> {
+    match how {
+        Interpolation::BandLimited => grid
+            .positions
+            .iter()
+            .map(|&p| kernel::interpolate(values, p))
+            .collect(),
+        Interpolation::Linear => grid
+            .positions
+            .iter()
+            .map(|&p| kernel::interpolate_linear(values, p))
+            .collect(),
+    }
+}
