@@ -29,6 +29,8 @@
 //! - [`transient`] — the nonlinear time domain: crank-angle-dependent engine inertia,
 //!   secant rubber stiffness with a causal Maxwell chain and self-heating, gear backlash;
 //!   Dormand–Prince integration; steady runs settled cycle by cycle, and run-ups.
+//! - [`compare`] — design variants regime by regime: IR per station, power loss per
+//!   rubber stage (seed 001 Tables 9–13).
 //! - [`check`] — the `[expect]` checks that `torsim check` runs on presets.
 //!
 //! ## Example
@@ -50,6 +52,7 @@
 #![warn(missing_docs)]
 
 pub mod check;
+pub mod compare;
 pub mod modal;
 pub mod model;
 pub mod physics;

@@ -17,10 +17,15 @@ pub fn run(recording: &str, json: bool) -> Result<(), CliError> {
     if json {
         return print_json(&to_json(&analysis)?);
     }
+    print_analysis(recording, &analysis, "")
+}
+
+/// Prints an analysis as tables, headed by `label`, with `extra` lines at the end.
+pub fn print_analysis(label: &str, analysis: &Analysis, extra: &str) -> Result<(), CliError> {
     let mut text = String::new();
     outln!(
         text,
-        "{recording} — {} run, reference `{}`, {} cycles averaged; orders zero-to-peak [rpm]",
+        "{label} — {} run, reference `{}`, {} cycles averaged; orders zero-to-peak [rpm]",
         analysis.kind.as_str(),
         analysis.reference,
         analysis.cycles
@@ -55,6 +60,7 @@ pub fn run(recording: &str, json: bool) -> Result<(), CliError> {
             axes.speeds_rpm.last().copied().unwrap_or(0.0)
         );
     }
+    text += extra;
     emit(&text)
 }
 

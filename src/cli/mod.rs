@@ -4,12 +4,15 @@
 mod analyse;
 mod campbell;
 mod check;
+mod compare;
 mod coupling;
 pub mod error;
 mod format;
 mod input;
 mod modes;
+mod progress;
 mod response;
+mod simulate;
 
 use clap::{Parser, Subcommand};
 use error::CliError;
@@ -70,6 +73,10 @@ pub enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// Nonlinear time-domain simulation: a steady run or a speed ramp, with its order analysis.
+    Simulate(simulate::SimulateArgs),
+    /// Design variants side by side: IR per station and power loss per rubber stage at each regime.
+    Compare(compare::CompareArgs),
     /// Runs the [expect] checks of presets (all of ./presets/ when none named).
     Check {
         /// Model files or preset:NAME.
@@ -132,6 +139,8 @@ pub fn run(cli: Cli) -> Result<(), CliError> {
         }) => response::run(&sweep, orders, json),
         Some(Command::Check { presets, json }) => check::run(&presets, json),
         Some(Command::Analyse { recording, json }) => analyse::run(&recording, json),
+        Some(Command::Simulate(args)) => simulate::run(&args),
+        Some(Command::Compare(args)) => compare::run(&args),
         Some(Command::Coupling {
             model,
             frequency_hz,

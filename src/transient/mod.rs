@@ -11,6 +11,7 @@
 
 pub mod dopri;
 mod error;
+mod export;
 pub mod forces;
 pub mod maxwell;
 mod nnls;
@@ -20,5 +21,6 @@ pub mod speed;
 mod start;
 
 pub use error::TransientError;
+pub use export::to_recording;
 pub use run::{RunKind, RunOptions, Settling, Simulation, simulate};
 pub use speed::SpeedProfile;

@@ -81,6 +81,8 @@ pub struct Simulation {
     pub node_names: Vec<String>,
     /// Reference node index.
     pub reference_node: usize,
+    /// Mean speed of each node over the reference's (signed).
+    pub speed_ratio: Vec<f64>,
     /// Sample times from the start of recording, s.
     pub time_s: Vec<f64>,
     /// IAS of every node in its own shaft, rpm: `[node][sample]`.
@@ -324,6 +326,7 @@ fn empty_simulation(plant: &Plant, samples: usize, settling: Settling) -> Simula
     Simulation {
         node_names: sys.node_names.clone(),
         reference_node: sys.reference_node,
+        speed_ratio: sys.speed_ratio.clone(),
         time_s: vec![0.0; samples],
         speed_rpm: vec![vec![0.0; samples]; sys.node_names.len()],
         torque_nm: plant

@@ -1,0 +1,178 @@
+//! `torsim simulate MODEL --speed-rpm N [--duration-s T] [--rate-hz R] [--csv FILE]` and
+//! `torsim simulate MODEL --run-up A:B --duration-s T`: the nonlinear time domain, with
+//! the order analysis of the result (the same as `analyse` of its CSV).
+
+use super::analyse::{print_analysis, to_json};
+use super::error::CliError;
+use super::format::{number, print_warnings};
+use super::input::{check_load, load_model};
+use super::progress::Progress;
+use serde_json::{Map, Value, json};
+use std::path::Path;
+use torsim::recording::write_recording;
+use torsim::signal::{AnalysisOptions, analyse_with};
+use torsim::transient::{RunKind, RunOptions, simulate, to_recording};
+
+/// Options of the command.
+#[derive(Debug, clap::Args)]
+pub struct SimulateArgs {
+    /// Model file or preset:NAME.
+    pub model: String,
+    /// Steady mean speed of the reference (crank), rpm.
+    #[arg(long, conflicts_with = "run_up", required_unless_present = "run_up")]
+    pub speed_rpm: Option<f64>,
+    /// A linear ramp FROM:TO rpm over --duration-s (run-up, or run-down if TO < FROM).
+    #[arg(long, value_name = "FROM:TO")]
+    pub run_up: Option<String>,
+    /// Recorded duration, s (default 2 for a steady run; required for a ramp).
+    #[arg(long)]
+    pub duration_s: Option<f64>,
+    /// Output sample rate, Hz.
+    #[arg(long, default_value_t = 10240.0)]
+    pub rate_hz: f64,
+    /// Engine load 0..1: picks the pressure curve.
+    #[arg(long, default_value_t = 1.0)]
+    pub load: f64,
+    /// Relative tolerance of the integrator.
+    #[arg(long, default_value_t = 1e-6)]
+    pub rtol: f64,
+    /// Write the run as a recording (CSV and its .toml sidecar).
+    #[arg(long)]
+    pub csv: Option<String>,
+    /// Print one JSON document.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// What to run, from the options.
+fn run_kind(a: &SimulateArgs) -> Result<RunKind, CliError> {
+    let bad = |m: String| CliError::input(anyhow::anyhow!(m));
+    match (&a.run_up, a.speed_rpm) {
+        (Some(spec), _) => {
+            let (from, to) = spec
+                .split_once(':')
+                .and_then(|(f, t)| {
+                    Some((f.trim().parse::<f64>().ok()?, t.trim().parse::<f64>().ok()?))
+                })
+                .ok_or_else(|| {
+                    bad(format!(
+                        "--run-up {spec}: expected FROM:TO in rpm, e.g. 400:2000"
+                    ))
+                })?;
+            let duration_s = a
+                .duration_s
+                .ok_or_else(|| bad("--run-up needs --duration-s".into()))?;
+            Ok(RunKind::Ramp {
+                from_rpm: from,
+                to_rpm: to,
+                duration_s,
+            })
+        }
+        (None, Some(speed_rpm)) => Ok(RunKind::Steady {
+            speed_rpm,
+            duration_s: a.duration_s.unwrap_or(2.0),
+        }),
+        (None, None) => Err(bad("give --speed-rpm N or --run-up FROM:TO".into())),
+    }
+}
+
+/// Runs the command.
+pub fn run(a: &SimulateArgs) -> Result<(), CliError> {
+    let model = load_model(&a.model)?;
+    let kind = run_kind(a)?;
+    let options = RunOptions {
+        load: check_load(a.load)?,
+        rate_hz: a.rate_hz,
+        rtol: a.rtol,
+        ..RunOptions::default()
+    };
+    if !(a.rtol > 0.0 && a.rtol < 0.1) {
+        return Err(CliError::input(anyhow::anyhow!(
+            "--rtol {}: must be within 0 … 0.1",
+            a.rtol
+        )));
+    }
+    let progress = Progress::new("simulating");
+    let result = simulate(&model, kind, options, &mut |f| progress.set(f));
+    progress.finish();
+    let sim = result.map_err(|e| match e {
+        torsim::transient::TransientError::Model(_)
+        | torsim::transient::TransientError::Physics(_) => CliError::input(e),
+        _ => CliError::failed(e),
+    })?;
+    let mut warnings = Vec::new();
+    if !sim.settling.converged {
+        warnings.push(format!(
+            "the run did not settle within {} s (cycle-to-cycle change {:.2e}); recorded anyway",
+            options.max_settle_s, sim.settling.change
+        ));
+    }
+    for (c, chain) in &sim.chains {
+        warnings.push(format!(
+            "rubber stage `{}`: causal Maxwell chain fitted over {:.1} … {:.0} Hz with {} arms; worst error {:.1} % in stiffness, {:.1} % in loss against seed 000's law",
+            sim.connection_names[*c],
+            chain.band_hz[0],
+            chain.band_hz[1],
+            chain.arms.len(),
+            100.0 * chain.stiffness_error,
+            100.0 * chain.loss_error
+        ));
+    }
+    print_warnings(&warnings);
+    let recording = to_recording(&sim, kind, options.load, model.strokes(), &model.name);
+    if let Some(path) = &a.csv {
+        write_recording(&recording, Path::new(path)).map_err(CliError::input)?;
+    }
+    let mut analysis_options = AnalysisOptions::default();
+    for (node, ratio) in sim.node_names.iter().zip(&sim.speed_ratio) {
+        analysis_options
+            .shaft_ratio
+            .insert(node.clone(), ratio.abs());
+    }
+    let analysis = analyse_with(&recording, &analysis_options).map_err(CliError::failed)?;
+    if a.json {
+        let mut doc = to_json(&analysis)?;
+        if let Value::Object(map) = &mut doc {
+            let mut power = Map::new();
+            for (c, w) in &sim.power_loss_w {
+                power.insert(sim.connection_names[*c].clone(), number(*w, "power loss")?);
+            }
+            map.insert("power_loss_w".into(), Value::Object(power));
+            let mut temperatures = Map::new();
+            for (c, t) in &sim.temperature_c {
+                temperatures.insert(sim.connection_names[*c].clone(), json!(t.last()));
+            }
+            map.insert("final_temperature_c".into(), Value::Object(temperatures));
+            map.insert(
+                "settling".into(),
+                json!({"cycles": sim.settling.cycles, "time_s": sim.settling.time_s, "converged": sim.settling.converged}),
+            );
+            map.insert(
+                "steps".into(),
+                json!({"accepted": sim.steps.0, "rejected": sim.steps.1}),
+            );
+        }
+        return super::format::print_json(&doc);
+    }
+    let label = match kind {
+        RunKind::Steady {
+            speed_rpm,
+            duration_s,
+        } => format!("{}: steady {speed_rpm} rpm, {duration_s} s", model.name),
+        RunKind::Ramp {
+            from_rpm,
+            to_rpm,
+            duration_s,
+        } => format!(
+            "{}: ramp {from_rpm} → {to_rpm} rpm in {duration_s} s",
+            model.name
+        ),
+    };
+    let mut extra = String::new();
+    for (c, w) in &sim.power_loss_w {
+        if *w > 0.0 {
+            extra += &format!("power loss `{}`: {w:.3} W\n", sim.connection_names[*c]);
+        }
+    }
+    print_analysis(&label, &analysis, &extra)
+}
