@@ -34,7 +34,7 @@ pub struct SimulateArgs {
     #[arg(long, default_value_t = 1.0)]
     pub load: f64,
     /// Relative tolerance of the integrator.
-    #[arg(long, default_value_t = 1e-6)]
+    #[arg(long, default_value_t = 1e-5)]
     pub rtol: f64,
     /// Write the run as a recording (CSV and its .toml sidecar).
     #[arg(long)]
@@ -129,6 +129,16 @@ pub fn run(a: &SimulateArgs) -> Result<(), CliError> {
             .shaft_ratio
             .insert(node.clone(), ratio.abs());
     }
+    // The relative speed across each rubber stage (seed 001's n_rel = n_es − n_bs).
+    analysis_options.pairs = Some(
+        model
+            .connections
+            .iter()
+            .filter(|c| matches!(c.kind, torsim::model::ConnectionKind::Rubber(_)))
+            .filter(|c| c.from != torsim::model::GROUND && c.to != torsim::model::GROUND)
+            .map(|c| (c.from.clone(), c.to.clone()))
+            .collect(),
+    );
     let analysis = analyse_with(&recording, &analysis_options).map_err(CliError::failed)?;
     if a.json {
         let mut doc = to_json(&analysis)?;

@@ -32,6 +32,9 @@ pub struct AnalysisOptions {
     /// Speed of a node's shaft over the reference shaft's, by node (default 1), used to
     /// refer one station to the other's shaft in the relative speed.
     pub shaft_ratio: BTreeMap<String, f64>,
+    /// Station pairs `(a, b)` whose relative speed `n_a − n_b` is reported; `None`: every
+    /// pair (a bench usually has two or three stations).
+    pub pairs: Option<Vec<(String, String)>>,
 }
 
 impl Default for AnalysisOptions {
@@ -45,6 +48,7 @@ impl Default for AnalysisOptions {
             track_max_order: 12.0,
             interpolation: Interpolation::BandLimited,
             shaft_ratio: BTreeMap::new(),
+            pairs: None,
         }
     }
 }
@@ -188,6 +192,14 @@ pub fn analyse_with(
     let mut n_rel = Vec::new();
     for (i, (a, va)) in stations_in.iter().enumerate() {
         for (b, vb) in &stations_in[i + 1..] {
+            let wanted = options.pairs.as_ref().is_none_or(|pairs| {
+                pairs
+                    .iter()
+                    .any(|(x, y)| (x == a && y == b) || (x == b && y == a))
+            });
+            if !wanted {
+                continue;
+            }
             let rel = stats::relative_speed(va, vb, ratio(a) / ratio(b));
             n_rel.push(cx.signal(&format!("{a}-{b}"), &rel, stats::mean(va))?);
         }

@@ -1,0 +1,136 @@
+//! `simulate` and `compare` from the command line: JSON shapes of `spec/cli.md`, and
+//! `analyse` of a simulated CSV gives back `simulate`'s own numbers.
+
+use serde_json::Value;
+use std::process::{Command, Output};
+
+fn torsim(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_torsim"))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .expect("run torsim")
+}
+
+fn json(args: &[&str]) -> Value {
+    let out = torsim(args);
+    assert!(
+        out.status.success(),
+        "{args:?}: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    serde_json::from_slice(&out.stdout)
+        .unwrap_or_else(|e| panic!("{args:?}: not one JSON document: {e}"))
+}
+
+/// The analysis `simulate` prints and the analysis of the CSV it wrote agree to the last
+/// printed digit: the CSV round-trips the samples exactly.
+#[test]
+fn analyse_of_simulate_csv_gives_back_its_orders() {
+    let dir = std::env::temp_dir().join(format!("torsim-sim-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let csv = dir.join("rig.csv").display().to_string();
+    let sim = json(&[
+        "simulate",
+        "preset:test-rig-70sh",
+        "--speed-rpm",
+        "3000",
+        "--duration-s",
+        "1",
+        "--rate-hz",
+        "4096",
+        "--csv",
+        &csv,
+        "--json",
+    ]);
+    for key in ["rms_rpm", "irregularity_pct", "orders"] {
+        assert!(
+            sim[key]["engine"].is_number() || sim[key]["engine"].is_object(),
+            "{key}"
+        );
+    }
+    assert!(
+        sim["orders"]["middle_flange"]["1"].as_f64().unwrap() > 0.1,
+        "order 1 near Regime A's resonance"
+    );
+    assert!(sim["power_loss_w"]["b"].as_f64().unwrap() > 0.0);
+    let analysed = json(&["analyse", &csv, "--json"]);
+    for node in ["engine", "coupling_es", "middle_flange"] {
+        for q in ["0.5", "1", "2", "4"] {
+            let (a, b) = (
+                sim["orders"][node][q].as_f64().unwrap(),
+                analysed["orders"][node][q].as_f64().unwrap(),
+            );
+            assert!(
+                (a - b).abs() <= 1e-9 * a.abs().max(1e-9),
+                "{node} order {q}: {a} vs {b}"
+            );
+        }
+        let (a, b) = (
+            sim["irregularity_pct"][node].as_f64().unwrap(),
+            analysed["irregularity_pct"][node].as_f64().unwrap(),
+        );
+        assert!((a - b).abs() <= 1e-9 * a.abs(), "{node} IR");
+    }
+    let sidecar = std::fs::read_to_string(dir.join("rig.toml")).unwrap();
+    assert!(sidecar.contains("kind = \"steady\"") && sidecar.contains("reference = \"engine\""));
+    let _ = std::fs::remove_dir_all(dir);
+}
+
+#[test]
+fn run_up_and_errors() {
+    let v = json(&[
+        "simulate",
+        "preset:test-rig-70sh",
+        "--run-up",
+        "2500:3500",
+        "--duration-s",
+        "2",
+        "--rate-hz",
+        "4096",
+        "--json",
+    ]);
+    assert!(v["rms_rpm"]["middle_flange"].as_f64().unwrap() > 0.0);
+    assert!(v["stft"].is_object(), "a run-up has its STFT");
+    let out = torsim(&[
+        "simulate",
+        "preset:test-rig-70sh",
+        "--run-up",
+        "2500-3500",
+        "--duration-s",
+        "2",
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("FROM:TO"));
+    let out = torsim(&["simulate", "preset:test-rig-70sh"]);
+    assert_eq!(out.status.code(), Some(2));
+}
+
+#[test]
+fn compare_json_shape() {
+    let v = json(&[
+        "compare",
+        "preset:test-rig-mod2",
+        "preset:test-rig-mod3",
+        "--speeds-rpm",
+        "3000,4440",
+        "--duration-s",
+        "0.5",
+        "--json",
+    ]);
+    let variants = v["variants"].as_array().unwrap();
+    assert_eq!(variants.len(), 2);
+    for variant in variants {
+        assert_eq!(
+            variant["irregularity_pct"]["middle_flange"]
+                .as_array()
+                .unwrap()
+                .len(),
+            2
+        );
+        assert_eq!(variant["power_loss_w"]["b"].as_array().unwrap().len(), 2);
+        assert_eq!(variant["speeds_rpm"][1].as_f64(), Some(4440.0));
+    }
+    let out = torsim(&["compare", "tests/data/spec-examples/three-dof.toml"]);
+    assert_eq!(out.status.code(), Some(2), "no regimes and no --speeds-rpm");
+}
