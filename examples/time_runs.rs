@@ -1,20 +1,26 @@
 //! Times a steady run and a run-up of two presets (release build):
-//! `cargo run --release --example time_runs [rtol]`.
+//! `cargo run --release --example time_runs [rtol] [explicit|implicit]`.
 use std::time::Instant;
 use torsim::model::{parse_model, presets};
-use torsim::transient::{RunKind, RunOptions, simulate};
+use torsim::transient::{Method, RunKind, RunOptions, simulate};
 
 fn main() {
     let rtol: f64 = std::env::args()
         .nth(1)
         .and_then(|a| a.parse().ok())
-        .unwrap_or(1e-6);
+        .unwrap_or(1e-5);
+    let method = match std::env::args().nth(2).as_deref() {
+        Some("implicit") => Method::Implicit,
+        Some("explicit") => Method::Explicit,
+        _ => Method::Auto,
+    };
     let run = |name: &str, kind: RunKind| {
         let preset = presets::preset(name).expect("preset");
         let model = parse_model(preset.text, name).expect("model");
         let start = Instant::now();
         let options = RunOptions {
             rtol,
+            method,
             ..RunOptions::default()
         };
         let sim = simulate(&model, kind, options, &mut |_| true).expect("run");

@@ -180,23 +180,32 @@ impl Dopri5 {
 
     /// The state at `t` within the last accepted step, by cubic Hermite interpolation.
     pub fn interpolate(&self, t: f64, out: &mut [f64]) {
-        let h = self.t - self.t_prev;
-        if h <= 0.0 {
-            out.copy_from_slice(&self.y);
-            return;
-        }
-        let s = ((t - self.t_prev) / h).clamp(0.0, 1.0);
-        let (s2, s3) = (s * s, s * s * s);
-        let h00 = 2.0 * s3 - 3.0 * s2 + 1.0;
-        let h10 = s3 - 2.0 * s2 + s;
-        let h01 = -2.0 * s3 + 3.0 * s2;
-        let h11 = s3 - s2;
-        for (i, o) in out.iter_mut().enumerate() {
-            *o = h00 * self.y_prev[i]
-                + h10 * h * self.f_prev[i]
-                + h01 * self.y[i]
-                + h11 * h * self.f[i];
-        }
+        hermite(
+            (self.t_prev, &self.y_prev, &self.f_prev),
+            (self.t, &self.y, &self.f),
+            t,
+            out,
+        );
+    }
+}
+
+/// Cubic Hermite interpolation at `t` between `(t0, y0, f0)` and `(t1, y1, f1)` (states and
+/// derivatives), into `out`.
+pub fn hermite(start: (f64, &[f64], &[f64]), end: (f64, &[f64], &[f64]), t: f64, out: &mut [f64]) {
+    let ((t0, y0, f0), (t1, y1, f1)) = (start, end);
+    let h = t1 - t0;
+    if h <= 0.0 {
+        out.copy_from_slice(y1);
+        return;
+    }
+    let s = ((t - t0) / h).clamp(0.0, 1.0);
+    let (s2, s3) = (s * s, s * s * s);
+    let h00 = 2.0 * s3 - 3.0 * s2 + 1.0;
+    let h10 = s3 - 2.0 * s2 + s;
+    let h01 = -2.0 * s3 + 3.0 * s2;
+    let h11 = s3 - s2;
+    for (i, o) in out.iter_mut().enumerate() {
+        *o = h00 * y0[i] + h10 * h * f0[i] + h01 * y1[i] + h11 * h * f1[i];
     }
 }
 

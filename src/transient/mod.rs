@@ -16,11 +16,14 @@ pub mod forces;
 pub mod maxwell;
 mod nnls;
 pub mod plant;
+pub mod ros2;
 pub mod run;
 pub mod speed;
 mod start;
+pub mod stepper;
 
 pub use error::TransientError;
 pub use export::to_recording;
 pub use run::{RunKind, RunOptions, Settling, Simulation, simulate};
 pub use speed::SpeedProfile;
+pub use stepper::Method;

@@ -389,3 +389,29 @@ impl Plant {
             .unwrap_or(25.0)
     }
 }
+
+impl Plant {
+    /// The fastest rate of the linearized plant, rad/s: its highest natural frequency
+    /// (undamped modes of the linear system) or its fastest Maxwell arm (1/τ), whichever
+    /// is larger. Sets whether a run is stiff.
+    pub fn fastest_rate_rad_s(&self) -> f64 {
+        let modes = crate::modal::modes(&self.system).map_or(0.0, |m| {
+            m.last()
+                .map_or(0.0, |mode| std::f64::consts::TAU * mode.frequency_hz)
+        });
+        let arms = self
+            .elements
+            .iter()
+            .filter_map(|e| match &e.law {
+                PlantLaw::Rubber(r) => r
+                    .chain
+                    .arms
+                    .iter()
+                    .map(|(_, tau)| 1.0 / tau)
+                    .reduce(f64::max),
+                _ => None,
+            })
+            .fold(0.0, f64::max);
+        modes.max(arms)
+    }
+}

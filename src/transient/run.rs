@@ -6,8 +6,10 @@ use super::TransientError;
 use super::dopri::Dopri5;
 use super::maxwell::MaxwellChain;
 use super::plant::{Plant, PlantLaw, Temperature};
+use super::ros2::Ros2;
 use super::speed::SpeedProfile;
 use super::start::initial_state;
+use super::stepper::{Method, Stepper, is_stiff};
 use crate::model::Model;
 use std::f64::consts::TAU;
 
@@ -48,6 +50,8 @@ pub struct RunOptions {
     pub settle_tolerance: f64,
     /// Longest settling time before recording anyway, s (default 60).
     pub max_settle_s: f64,
+    /// Integrator (default: explicit unless the model is stiff).
+    pub method: Method,
 }
 
 impl Default for RunOptions {
@@ -58,6 +62,7 @@ impl Default for RunOptions {
             rtol: 1e-5,
             settle_tolerance: 1e-4,
             max_settle_s: 60.0,
+            method: Method::Auto,
         }
     }
 }
@@ -152,7 +157,32 @@ pub fn simulate(
     let mut solver = {
         let mut rhs =
             |t: f64, y: &[f64], dy: &mut [f64]| plant.derivatives(t, y, dy, &profile, &mut mass);
-        Dopri5::new(0.0, y0, h_max / 10.0, h_max, options.rtol, atol, &mut rhs)
+        let implicit = match options.method {
+            Method::Implicit => true,
+            Method::Explicit => false,
+            Method::Auto => is_stiff(plant.fastest_rate_rad_s(), h_max),
+        };
+        if implicit {
+            Stepper::Implicit(Ros2::new(
+                0.0,
+                y0,
+                h_max / 10.0,
+                h_max,
+                options.rtol,
+                atol,
+                &mut rhs,
+            ))
+        } else {
+            Stepper::Explicit(Dopri5::new(
+                0.0,
+                y0,
+                h_max / 10.0,
+                h_max,
+                options.rtol,
+                atol,
+                &mut rhs,
+            ))
+        }
     };
     // A ramp is itself a transient: settling its start to 1e-3 of the vibration is enough.
     let settle_options = match kind {
@@ -171,7 +201,7 @@ pub fn simulate(
         settle_options,
         progress,
     )?;
-    let t0 = solver.t;
+    let t0 = solver.t();
     if let RunKind::Ramp { .. } = kind {
         profile = SpeedProfile::ramp(from_rpm, to_rpm, t0, duration_s);
     }
@@ -188,8 +218,8 @@ pub fn simulate(
             };
             solver.step(t_end + 1.0 / options.rate_hz, &mut rhs)?;
         }
-        check_state(&plant, solver.t, &solver.y, &profile)?;
-        while next < samples && t0 + next as f64 / options.rate_hz <= solver.t {
+        check_state(&plant, solver.t(), solver.y(), &profile)?;
+        while next < samples && t0 + next as f64 / options.rate_hz <= solver.t() {
             let t = t0 + next as f64 / options.rate_hz;
             solver.interpolate(t, &mut state);
             record(&plant, &profile, t, &state, next, &mut sim);
@@ -200,11 +230,11 @@ pub fn simulate(
         if done - last_report >= 0.005 {
             last_report = done;
             if !progress(0.1 + 0.9 * done) {
-                return Err(TransientError::Cancelled { time_s: solver.t });
+                return Err(TransientError::Cancelled { time_s: solver.t() });
             }
         }
     }
-    sim.steps = solver.steps;
+    sim.steps = solver.steps();
     Ok(sim)
 }
 
@@ -214,13 +244,13 @@ fn settle(
     plant: &Plant,
     profile: &SpeedProfile,
     mass: &mut [f64],
-    solver: &mut Dopri5,
+    solver: &mut Stepper,
     cycle_s: f64,
     options: RunOptions,
     progress: &mut dyn FnMut(f64) -> bool,
 ) -> Result<Settling, TransientError> {
     let n = plant.n_dof;
-    let mut previous: Vec<f64> = solver.y[n..2 * n].to_vec();
+    let mut previous: Vec<f64> = solver.y()[n..2 * n].to_vec();
     let mut settling = Settling {
         cycles: 0,
         time_s: 0.0,
@@ -229,26 +259,28 @@ fn settle(
     };
     let max_cycles = (options.max_settle_s / cycle_s).ceil().max(3.0) as usize;
     while settling.cycles < max_cycles {
-        let t_end = solver.t + cycle_s;
+        let t_end = solver.t() + cycle_s;
         let mut peak: f64 = 0.0;
-        while solver.t < t_end - 1e-12 * t_end.max(1.0) {
+        while solver.t() < t_end - 1e-12 * t_end.max(1.0) {
             let mut rhs =
                 |t: f64, y: &[f64], dy: &mut [f64]| plant.derivatives(t, y, dy, profile, mass);
             solver.step(t_end, &mut rhs)?;
-            check_state(plant, solver.t, &solver.y, profile)?;
-            peak = solver.y[n..2 * n].iter().fold(peak, |m, v| m.max(v.abs()));
+            check_state(plant, solver.t(), solver.y(), profile)?;
+            peak = solver.y()[n..2 * n]
+                .iter()
+                .fold(peak, |m, v| m.max(v.abs()));
         }
         settling.cycles += 1;
-        let scale = peak.max(1e-9 * profile.at(solver.t).1);
-        settling.change = solver.y[n..2 * n]
+        let scale = peak.max(1e-9 * profile.at(solver.t()).1);
+        settling.change = solver.y()[n..2 * n]
             .iter()
             .zip(&previous)
             .fold(0.0_f64, |m, (a, b)| m.max((a - b).abs()))
             / scale;
-        previous.copy_from_slice(&solver.y[n..2 * n]);
-        settling.time_s = solver.t;
+        previous.copy_from_slice(&solver.y()[n..2 * n]);
+        settling.time_s = solver.t();
         if !progress(0.1 * settling.cycles as f64 / max_cycles as f64) {
-            return Err(TransientError::Cancelled { time_s: solver.t });
+            return Err(TransientError::Cancelled { time_s: solver.t() });
         }
         // Integration error makes the change noisy at ~rtol: never ask for less than 20×.
         if settling.cycles >= 3

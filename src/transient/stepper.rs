@@ -1,0 +1,78 @@
+//! The integrator a run uses: Dormand–Prince for ordinary models, ROS2 for stiff ones.
+
+use super::TransientError;
+use super::dopri::Dopri5;
+use super::ros2::Ros2;
+
+/// Which integrator to use.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Method {
+    /// Explicit Dormand–Prince 5(4) unless the model is stiff (see [`is_stiff`]).
+    #[default]
+    Auto,
+    /// Dormand–Prince 5(4).
+    Explicit,
+    /// ROS2, linearly implicit, L-stable.
+    Implicit,
+}
+
+/// True when stability, not accuracy, would hold an explicit method back: the fastest
+/// eigenvalue `λ_max` (rad/s) times the largest step the excitation allows exceeds 20
+/// (Dormand–Prince is stable to about 3.3).
+pub fn is_stiff(lambda_max_rad_s: f64, h_max_s: f64) -> bool {
+    lambda_max_rad_s * h_max_s > 20.0
+}
+
+/// An integrator in use.
+pub enum Stepper {
+    /// Dormand–Prince.
+    Explicit(Dopri5),
+    /// ROS2.
+    Implicit(Ros2),
+}
+
+impl Stepper {
+    /// Current time, s.
+    pub fn t(&self) -> f64 {
+        match self {
+            Stepper::Explicit(s) => s.t,
+            Stepper::Implicit(s) => s.t,
+        }
+    }
+
+    /// Current state.
+    pub fn y(&self) -> &[f64] {
+        match self {
+            Stepper::Explicit(s) => &s.y,
+            Stepper::Implicit(s) => &s.y,
+        }
+    }
+
+    /// Accepted and rejected steps.
+    pub fn steps(&self) -> (u64, u64) {
+        match self {
+            Stepper::Explicit(s) => s.steps,
+            Stepper::Implicit(s) => s.steps,
+        }
+    }
+
+    /// One accepted step, not beyond `t_end`.
+    pub fn step<F: FnMut(f64, &[f64], &mut [f64])>(
+        &mut self,
+        t_end: f64,
+        rhs: &mut F,
+    ) -> Result<(), TransientError> {
+        match self {
+            Stepper::Explicit(s) => s.step(t_end, rhs),
+            Stepper::Implicit(s) => s.step(t_end, rhs),
+        }
+    }
+
+    /// Dense output at `t` within the last step.
+    pub fn interpolate(&self, t: f64, out: &mut [f64]) {
+        match self {
+            Stepper::Explicit(s) => s.interpolate(t, out),
+            Stepper::Implicit(s) => s.interpolate(t, out),
+        }
+    }
+}
