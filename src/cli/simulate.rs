@@ -11,7 +11,7 @@ use serde_json::{Map, Value, json};
 use std::path::Path;
 use torsim::recording::write_recording;
 use torsim::signal::{AnalysisOptions, analyse_with};
-use torsim::transient::{RunKind, RunOptions, simulate, to_recording};
+use torsim::transient::{Method, RunKind, RunOptions, simulate, to_recording};
 
 /// Options of the command.
 #[derive(Debug, clap::Args)]
@@ -36,12 +36,26 @@ pub struct SimulateArgs {
     /// Relative tolerance of the integrator.
     #[arg(long, default_value_t = 1e-5)]
     pub rtol: f64,
+    /// Integrator: auto (Dormand–Prince unless the model is stiff), explicit or implicit (ROS2).
+    #[arg(long, value_enum, default_value_t = MethodArg::Auto)]
+    pub method: MethodArg,
     /// Write the run as a recording (CSV and its .toml sidecar).
     #[arg(long)]
     pub csv: Option<String>,
     /// Print one JSON document.
     #[arg(long)]
     pub json: bool,
+}
+
+/// `--method`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum MethodArg {
+    /// Dormand–Prince unless the model is stiff.
+    Auto,
+    /// Dormand–Prince 5(4).
+    Explicit,
+    /// ROS2, linearly implicit.
+    Implicit,
 }
 
 /// What to run, from the options.
@@ -80,10 +94,16 @@ fn run_kind(a: &SimulateArgs) -> Result<RunKind, CliError> {
 pub fn run(a: &SimulateArgs) -> Result<(), CliError> {
     let model = load_model(&a.model)?;
     let kind = run_kind(a)?;
+    let method = match a.method {
+        MethodArg::Auto => Method::Auto,
+        MethodArg::Explicit => Method::Explicit,
+        MethodArg::Implicit => Method::Implicit,
+    };
     let options = RunOptions {
         load: check_load(a.load)?,
         rate_hz: a.rate_hz,
         rtol: a.rtol,
+        method,
         ..RunOptions::default()
     };
     if !(a.rtol > 0.0 && a.rtol < 0.1) {
