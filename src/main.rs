@@ -2,6 +2,7 @@
 //! (1: failed check or analysis, 2: bad input or usage).
 
 mod cli;
+mod gui;
 
 use clap::Parser;
 use std::process::ExitCode;

@@ -42,17 +42,6 @@ pub struct Sweep {
 }
 
 impl Sweep {
-    /// The model's whole speed range at full load.
-    pub fn whole_range(model: String) -> Self {
-        Self {
-            model,
-            from_rpm: None,
-            to_rpm: None,
-            step_rpm: None,
-            load: 1.0,
-        }
-    }
-
     /// Loads the model and works out the speed grid and the load.
     pub fn resolve(&self) -> Result<(Model, Vec<f64>, f64), CliError> {
         let model = load_model(&self.model)?;

@@ -9,6 +9,7 @@ mod coupling;
 pub mod error;
 mod format;
 mod input;
+pub use input::load_model;
 mod modes;
 mod progress;
 mod response;
@@ -115,16 +116,7 @@ pub enum Command {
 /// Runs the parsed command line.
 pub fn run(cli: Cli) -> Result<(), CliError> {
     match cli.command {
-        None => {
-            let model = cli
-                .model
-                .unwrap_or_else(|| format!("preset:{}", torsim::model::presets::DEFAULT_PRESET));
-            eprintln!(
-                "torsim: the GUI is not part of this build yet; showing the model's modes and Campbell crossings."
-            );
-            modes::run(&model, None, 1.0, false)?;
-            campbell::run(&input::Sweep::whole_range(model), None, false)
-        }
+        None => crate::gui::run(cli.model),
         Some(Command::Modes {
             model,
             speed_rpm,

@@ -1,0 +1,227 @@
+//! The torsim window: the model being edited, the latest results, and the panels.
+//! Edits go through [`TorsimApp::commit`], which keeps undo history, marks the model
+//! unsaved and sends a new request to the simulation thread.
+
+use super::worker::{SimResult, Worker};
+use super::{editor, files, plots};
+use std::path::PathBuf;
+use std::sync::Arc;
+use torsim::modal::{Campbell, DampedMode};
+use torsim::model::{Model, validate};
+use torsim::physics::System;
+use torsim::response::Response;
+use torsim::transient::Simulation;
+
+/// The plot shown in the central panel.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Tab {
+    /// Modes over speed with order lines.
+    Campbell,
+    /// Mode shapes along the driveline.
+    Modes,
+    /// Forced response over speed.
+    Response,
+    /// Time traces of a steady run.
+    Traces,
+}
+
+/// The latest results for the model on screen (the last good ones stay while an edit is
+/// invalid or still computing).
+#[derive(Default)]
+pub struct Results {
+    /// Generation of the last request.
+    pub generation: u64,
+    /// Modes, Campbell diagram and damped modes.
+    pub campbell: Option<Arc<(System, Campbell, Vec<DampedMode>)>>,
+    /// Forced response.
+    pub response: Option<Arc<Response>>,
+    /// Steady time run.
+    pub trace: Option<Arc<Simulation>>,
+    /// Progress of the time run.
+    pub trace_progress: f32,
+    /// Errors by panel.
+    pub errors: Vec<(&'static str, String)>,
+}
+
+/// The application.
+pub struct TorsimApp {
+    /// The model being edited.
+    pub model: Model,
+    /// Where it came from / is saved to.
+    pub path: Option<PathBuf>,
+    /// True when there are unsaved edits.
+    pub dirty: bool,
+    /// Earlier versions (undo) and undone ones (redo).
+    pub undo: Vec<Model>,
+    /// Undone versions.
+    pub redo: Vec<Model>,
+    /// The model's validation error, if any (results are not requested then).
+    pub invalid: Option<String>,
+    /// Results.
+    pub results: Results,
+    /// Central tab.
+    pub tab: Tab,
+    /// Mode selected for the mode-shape view (0-based).
+    pub selected_mode: usize,
+    /// Speed of the steady time run, rpm.
+    pub trace_speed_rpm: f64,
+    /// A status line (file saved, errors of file dialogs).
+    pub status: String,
+    /// Pending file dialog results.
+    pub files: files::FileDialogs,
+    worker: Worker,
+}
+
+impl TorsimApp {
+    /// A window on `model` (from `path`, if it came from a file); `wake` repaints.
+    pub fn new(model: Model, path: Option<PathBuf>, wake: impl Fn() + Send + 'static) -> Self {
+        let trace_speed_rpm = model
+            .operation
+            .operating_range_rpm
+            .or(model.operation.speed_range_rpm)
+            .map_or(1500.0, |[a, b]| 0.5 * (a + b));
+        let mut app = Self {
+            model,
+            path,
+            dirty: false,
+            undo: Vec::new(),
+            redo: Vec::new(),
+            invalid: None,
+            results: Results::default(),
+            tab: Tab::Campbell,
+            selected_mode: 0,
+            trace_speed_rpm,
+            status: String::new(),
+            files: files::FileDialogs::default(),
+            worker: Worker::start(wake),
+        };
+        app.request();
+        app
+    }
+
+    /// Validates the model and, when valid, asks the worker for new results.
+    pub fn request(&mut self) {
+        match validate(&self.model) {
+            Ok(()) => {
+                self.invalid = None;
+                self.results.generation += 1;
+                self.results.errors.clear();
+                self.worker
+                    .request(self.results.generation, &self.model, self.trace_speed_rpm);
+            }
+            Err(e) => self.invalid = Some(e.to_string()),
+        }
+    }
+
+    /// Records an edit: `before` goes on the undo stack, the model is unsaved, results are
+    /// requested again.
+    pub fn commit(&mut self, before: Model) {
+        if before != self.model {
+            self.undo.push(before);
+            self.redo.clear();
+            self.dirty = true;
+            self.request();
+        }
+    }
+
+    /// Undoes the last edit.
+    pub fn undo(&mut self) {
+        if let Some(previous) = self.undo.pop() {
+            self.redo.push(std::mem::replace(&mut self.model, previous));
+            self.dirty = true;
+            self.request();
+        }
+    }
+
+    /// Redoes the last undone edit.
+    pub fn redo(&mut self) {
+        if let Some(next) = self.redo.pop() {
+            self.undo.push(std::mem::replace(&mut self.model, next));
+            self.dirty = true;
+            self.request();
+        }
+    }
+
+    /// Takes every result the worker sent; stale ones are dropped.
+    pub fn receive(&mut self) {
+        while let Ok(r) = self.worker.results.try_recv() {
+            let current = self.results.generation;
+            match r {
+                SimResult::Campbell(g, c) if g == current => self.results.campbell = Some(c),
+                SimResult::Response(g, r) if g == current => self.results.response = Some(r),
+                SimResult::Trace(g, t) if g == current => {
+                    self.results.trace = Some(t);
+                    self.results.trace_progress = 1.0;
+                }
+                SimResult::Progress(g, p) if g == current => self.results.trace_progress = p,
+                SimResult::Error(g, panel, e) if g == current => {
+                    self.results.errors.push((panel, e))
+                }
+                _ => {}
+            }
+        }
+    }
+
+    /// The error of a panel, if any.
+    pub fn error_of(&self, panel: &str) -> Option<&str> {
+        self.results
+            .errors
+            .iter()
+            .find(|(p, _)| *p == panel)
+            .map(|(_, e)| e.as_str())
+    }
+
+    /// The window title: model name, file, unsaved mark.
+    pub fn title(&self) -> String {
+        let file = self
+            .path
+            .as_ref()
+            .map_or("(unsaved preset)".into(), |p| p.display().to_string());
+        format!(
+            "torsim — {} — {file}{}",
+            self.model.name,
+            if self.dirty { " •" } else { "" }
+        )
+    }
+}
+
+impl eframe::App for TorsimApp {
+    fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
+        self.receive();
+        files::poll(self, ui.ctx());
+        ui.ctx()
+            .send_viewport_cmd(egui::ViewportCommand::Title(self.title()));
+        let undo = egui::KeyboardShortcut::new(egui::Modifiers::COMMAND, egui::Key::Z);
+        let redo = egui::KeyboardShortcut::new(
+            egui::Modifiers::COMMAND | egui::Modifiers::SHIFT,
+            egui::Key::Z,
+        );
+        if ui.ctx().input_mut(|i| i.consume_shortcut(&redo)) {
+            self.redo();
+        } else if ui.ctx().input_mut(|i| i.consume_shortcut(&undo)) {
+            self.undo();
+        }
+        egui::Panel::top("menu").show(ui, |ui| files::menu_ui(self, ui));
+        egui::Panel::bottom("status").show(ui, |ui| {
+            ui.horizontal(|ui| {
+                if let Some(e) = &self.invalid {
+                    ui.colored_label(
+                        ui.visuals().error_fg_color,
+                        format!("Invalid model: {e} — showing the last good results"),
+                    );
+                } else {
+                    ui.label(&self.status);
+                }
+            });
+        });
+        egui::Panel::left("driveline")
+            .resizable(true)
+            .default_size(360.0)
+            .show(ui, |ui| {
+                let before = self.model.clone();
+                editor::driveline_ui(&mut self.model, ui);
+                self.commit(before);
+            });
+        egui::CentralPanel::default().show(ui, |ui| plots::central_ui(self, ui));
+    }
+}
