@@ -269,6 +269,45 @@ fn system_group(c: &mut Criterion) {
     g.finish();
 }
 
+/// What the GUI's simulation thread computes after every edit before the time run: the
+/// system, modes and Campbell diagram over 201 speeds, damped modes, the excitation and the
+/// forced response over the same speeds and the model's orders (target < 16 ms, a frame).
+fn cheap_results(model: &Model) {
+    let system = System::new(model, OperatingPoint::default()).expect("system");
+    let [from, to] = model.operation.speed_range_rpm.unwrap_or([100.0, 3000.0]);
+    let grid = torsim::modal::speed_grid(from, to, (to - from) / 200.0);
+    let orders = model.orders();
+    let diagram = torsim::modal::campbell(&system, &grid, &orders).expect("campbell");
+    black_box(torsim::modal::damped_modes(&system, &diagram.modes));
+    let excitation = Excitation::new(model, &system, 1.0, &orders);
+    black_box(torsim::response::forced_response(&system, &excitation, &grid).expect("response"));
+}
+
+fn edit_group(c: &mut Criterion) {
+    let mut group = c.benchmark_group("edit_to_cheap_results");
+    let presets: Vec<(String, Model)> = ["cng-genset", "test-rig-70sh"]
+        .iter()
+        .map(|name| {
+            let p = torsim::model::presets::preset(name).expect("preset");
+            (
+                name.to_string(),
+                torsim::model::parse_model(p.text, name).expect("model"),
+            )
+        })
+        .collect();
+    for (name, model) in &presets {
+        group.bench_function(name.as_str(), |b| {
+            b.iter(|| cheap_results(black_box(model)))
+        });
+    }
+    let mut chain = twenty_dof(Some(seed000_frequency_poly()));
+    chain.operation.speed_range_rpm = Some([300.0, 3000.0]);
+    group.bench_function("20dof_frequency_dependent", |b| {
+        b.iter(|| cheap_results(black_box(&chain)))
+    });
+    group.finish();
+}
+
 fn config() -> Criterion {
     Criterion::default()
         .measurement_time(Duration::from_secs(2))
@@ -279,6 +318,6 @@ fn config() -> Criterion {
 criterion_group! {
     name = linear;
     config = config();
-    targets = modes_group, campbell_group, response_group, system_group
+    targets = modes_group, campbell_group, response_group, system_group, edit_group
 }
 criterion_main!(linear);
