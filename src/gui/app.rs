@@ -69,6 +69,10 @@ pub struct TorsimApp {
     pub status: String,
     /// Pending file dialog results.
     pub files: files::FileDialogs,
+    /// The window was asked to close with unsaved edits: the prompt is showing.
+    pub close_prompt: bool,
+    /// The user chose to discard unsaved edits and close.
+    pub close_confirmed: bool,
     worker: Worker,
 }
 
@@ -93,6 +97,8 @@ impl TorsimApp {
             trace_speed_rpm,
             status: String::new(),
             files: files::FileDialogs::default(),
+            close_prompt: false,
+            close_confirmed: false,
             worker: Worker::start(wake),
         };
         app.request();
@@ -185,8 +191,69 @@ impl TorsimApp {
     }
 }
 
+/// Storage keys of the last session.
+pub const SESSION_MODEL: &str = "torsim.model_toml";
+/// Storage key of the last session's file path.
+pub const SESSION_PATH: &str = "torsim.model_path";
+/// Storage key: the last session had unsaved edits.
+pub const SESSION_DIRTY: &str = "torsim.dirty";
+
+impl TorsimApp {
+    /// Closing with unsaved edits asks first: save, discard, or stay.
+    fn close_prompt_ui(&mut self, ui: &mut egui::Ui) {
+        let ctx = ui.ctx().clone();
+        if ctx.input(|i| i.viewport().close_requested()) && self.dirty && !self.close_confirmed {
+            ctx.send_viewport_cmd(egui::ViewportCommand::CancelClose);
+            self.close_prompt = true;
+        }
+        if !self.close_prompt {
+            return;
+        }
+        egui::Window::new("Unsaved changes")
+            .collapsible(false)
+            .resizable(false)
+            .show(&ctx, |ui| {
+                ui.label(format!("{} has unsaved changes.", self.model.name));
+                ui.horizontal(|ui| {
+                    if ui.button("Save").clicked() {
+                        match self.path.clone() {
+                            Some(path) => files::save_to(self, path),
+                            None => self.status = "choose File → Save as… first".into(),
+                        }
+                        self.close_prompt = false;
+                        if !self.dirty {
+                            ctx.send_viewport_cmd(egui::ViewportCommand::Close);
+                        }
+                    }
+                    if ui.button("Discard and close").clicked() {
+                        self.close_confirmed = true;
+                        self.close_prompt = false;
+                        ctx.send_viewport_cmd(egui::ViewportCommand::Close);
+                    }
+                    if ui.button("Cancel").clicked() {
+                        self.close_prompt = false;
+                    }
+                });
+            });
+    }
+}
+
 impl eframe::App for TorsimApp {
+    /// The model as it stands (saved or not) is kept for the next start.
+    fn save(&mut self, storage: &mut dyn eframe::Storage) {
+        storage.set_string(SESSION_MODEL, torsim::model::to_toml_string(&self.model));
+        storage.set_string(
+            SESSION_PATH,
+            self.path
+                .as_ref()
+                .map(|p| p.display().to_string())
+                .unwrap_or_default(),
+        );
+        storage.set_string(SESSION_DIRTY, self.dirty.to_string());
+    }
+
     fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
+        self.close_prompt_ui(ui);
         self.receive();
         files::poll(self, ui.ctx());
         ui.ctx()

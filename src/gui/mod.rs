@@ -14,8 +14,27 @@ mod tests;
 use crate::cli::error::CliError;
 use std::path::PathBuf;
 
-/// Opens the window on `model_arg` (a file or `preset:NAME`), or the default preset.
+/// The last session's model, its file and whether it had unsaved edits, if stored.
+fn restore(
+    storage: Option<&dyn eframe::Storage>,
+) -> Option<(torsim::model::Model, Option<PathBuf>, bool)> {
+    let storage = storage?;
+    let text = storage.get_string(app::SESSION_MODEL)?;
+    let model = torsim::model::parse_model(&text, "last session").ok()?;
+    let path = storage
+        .get_string(app::SESSION_PATH)
+        .filter(|p| !p.is_empty())
+        .map(PathBuf::from);
+    let dirty = storage
+        .get_string(app::SESSION_DIRTY)
+        .is_some_and(|d| d == "true");
+    Some((model, path, dirty))
+}
+
+/// Opens the window on `model_arg` (a file or `preset:NAME`); without one, on the last
+/// session's model (unsaved edits included), else the default preset.
 pub fn run(model_arg: Option<String>) -> Result<(), CliError> {
+    let explicit = model_arg.is_some();
     let arg =
         model_arg.unwrap_or_else(|| format!("preset:{}", torsim::model::presets::DEFAULT_PRESET));
     let model = crate::cli::load_model(&arg)?;
@@ -31,9 +50,17 @@ pub fn run(model_arg: Option<String>) -> Result<(), CliError> {
         options,
         Box::new(move |cc| {
             let ctx = cc.egui_ctx.clone();
-            Ok(Box::new(app::TorsimApp::new(model, path, move || {
-                ctx.request_repaint()
-            })))
+            let wake = move || ctx.request_repaint();
+            let restored = if explicit { None } else { restore(cc.storage) };
+            Ok(Box::new(match restored {
+                Some((model, path, dirty)) => {
+                    let mut app = app::TorsimApp::new(model, path, wake);
+                    app.dirty = dirty;
+                    app.status = "restored the last session".into();
+                    app
+                }
+                None => app::TorsimApp::new(model, path, wake),
+            }))
         }),
     )
     .map_err(|e| CliError::failed(anyhow::anyhow!("cannot open the window: {e}")))

@@ -161,3 +161,36 @@ fn save_and_reopen_gives_the_same_model() {
     assert_eq!(read_model_file(&path).expect("reopen"), h.state().model);
     let _ = std::fs::remove_file(path);
 }
+
+/// An in-memory stand-in for eframe's storage.
+#[derive(Default)]
+struct MemoryStorage(std::collections::HashMap<String, String>);
+
+impl eframe::Storage for MemoryStorage {
+    fn get_string(&self, key: &str) -> Option<String> {
+        self.0.get(key).cloned()
+    }
+    fn set_string(&mut self, key: &str, value: String) {
+        self.0.insert(key.to_string(), value);
+    }
+    fn remove_string(&mut self, key: &str) {
+        self.0.remove(key);
+    }
+    fn flush(&mut self) {}
+}
+
+/// An unsaved edit survives closing the window: the session stores the model as edited,
+/// and the next start without a model argument opens it again, still marked unsaved.
+#[test]
+fn unsaved_edits_survive_a_restart() {
+    let mut h = harness();
+    let before = h.state().model.clone();
+    h.state_mut().model.inertias[0].inertia_kg_m2 = 0.123;
+    h.state_mut().commit(before);
+    let mut storage = MemoryStorage::default();
+    eframe::App::save(h.state_mut(), &mut storage);
+    let (model, path, dirty) = super::restore(Some(&storage)).expect("restored");
+    assert_eq!(model, h.state().model);
+    assert!(dirty && path.is_none());
+    assert!(super::restore(Some(&MemoryStorage::default())).is_none());
+}
