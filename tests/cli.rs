@@ -1,28 +1,9 @@
 //! The command line: JSON shapes of `spec/cli.md`, exit codes, errors that name the file.
 
-use serde_json::Value;
+mod run_cli;
+use run_cli::{json, torsim};
+
 use std::path::PathBuf;
-use std::process::{Command, Output};
-
-fn torsim(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_torsim"))
-        .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .expect("run torsim")
-}
-
-/// Runs a command that must succeed and print exactly one JSON document on stdout.
-fn json(args: &[&str]) -> Value {
-    let out = torsim(args);
-    assert!(
-        out.status.success(),
-        "{args:?}: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    serde_json::from_slice(&out.stdout)
-        .unwrap_or_else(|e| panic!("{args:?}: stdout is not one JSON document: {e}"))
-}
 
 const THREE_DOF: &str = "tests/data/spec-examples/three-dof.toml";
 const RUBBER: &str = "tests/data/spec-examples/rubber-elements.toml";
@@ -236,7 +217,7 @@ fn bad_input_names_file_line_and_key_with_exit_2() {
 /// Regression: output piped into a reader that has gone (`| head`) ended in a panic.
 #[test]
 fn closed_stdout_is_not_a_panic() {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_torsim"))
+    let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_torsim"))
         .args(["response", "preset:cng-genset"])
         .stdout(std::process::Stdio::piped())
         .stderr(std::process::Stdio::piped())

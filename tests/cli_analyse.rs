@@ -1,30 +1,13 @@
 //! `torsim analyse`: the JSON shape of spec/cli.md on recordings written by the library,
 //! and exit code 2 with `file:line: reason` on a bad recording.
 
+mod run_cli;
+use run_cli::{json, torsim};
+
 mod synth;
 
-use serde_json::Value;
-use std::process::{Command, Output};
 use synth::{generate, generate_with_angle, put, recording, temp_dir};
 use torsim::recording::{RunKind, write_recording};
-
-fn torsim(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_torsim"))
-        .args(args)
-        .output()
-        .expect("run torsim")
-}
-
-fn json(args: &[&str]) -> Value {
-    let out = torsim(args);
-    assert!(
-        out.status.success(),
-        "{args:?}: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    serde_json::from_slice(&out.stdout)
-        .unwrap_or_else(|e| panic!("{args:?}: not one JSON document: {e}"))
-}
 
 #[test]
 fn analyse_json_shape_steady() {

@@ -1,27 +1,8 @@
 //! `simulate` and `compare` from the command line: JSON shapes of `spec/cli.md`, and
 //! `analyse` of a simulated CSV gives back `simulate`'s own numbers.
 
-use serde_json::Value;
-use std::process::{Command, Output};
-
-fn torsim(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_torsim"))
-        .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .expect("run torsim")
-}
-
-fn json(args: &[&str]) -> Value {
-    let out = torsim(args);
-    assert!(
-        out.status.success(),
-        "{args:?}: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    serde_json::from_slice(&out.stdout)
-        .unwrap_or_else(|e| panic!("{args:?}: not one JSON document: {e}"))
-}
+mod run_cli;
+use run_cli::{json, torsim};
 
 /// The analysis `simulate` prints and the analysis of the CSV it wrote agree to the last
 /// printed digit: the CSV round-trips the samples exactly.
