@@ -6,6 +6,7 @@
 
 use super::lu::LuWorkspace;
 use super::peak::PeakSynthesizer;
+use super::tree::TreeSolver;
 use crate::physics::{Excitation, PhysicsError, System, matrices};
 use nalgebra::DMatrix;
 use num_complex::Complex64;
@@ -60,6 +61,10 @@ pub fn forced_response(
     let mut dynamic = DMatrix::<Complex64>::zeros(n, n);
     let mut angle = vec![Complex64::default(); n];
     let mut lu = LuWorkspace::default();
+    // O(n) elimination for tree-shaped drivelines; the dense LU for loops and near-zero
+    // pivots.
+    let mut tree = TreeSolver::new(system);
+    let mut element_z = vec![Complex64::default(); n_conn];
     // (stiffness, loss factor) of each element at the current frequency, and its viscous
     // damping: evaluated once per (speed, order) for the matrix and the element results.
     let mut stiffness = vec![(0.0, 0.0); n_conn];
@@ -80,16 +85,24 @@ pub fn forced_response(
             for (slot, e) in stiffness.iter_mut().zip(&system.elements) {
                 *slot = e.stiffness_at(frequency_hz);
             }
-            matrices::dynamic_stiffness_with(
-                system,
-                omega,
-                stiffness.iter().copied(),
-                &mut dynamic,
-            );
+            for ((z, &(k, loss)), &c_visc) in element_z.iter_mut().zip(&stiffness).zip(&viscous) {
+                *z = Complex64::new(k, k * loss + omega * c_visc);
+            }
+            let by_tree = tree
+                .as_mut()
+                .is_some_and(|t| t.solve(system, omega, &element_z, &mut angle));
             // Solved in place: `angle` holds the forcing on entry and Θ_q on return.
-            let solved =
-                lu.factor_solve(&mut dynamic, &mut angle) && angle.iter().all(|v| v.is_finite());
-            if !solved {
+            let solved = by_tree || {
+                excitation.forcing(q, speed, &mut angle);
+                matrices::dynamic_stiffness_with(
+                    system,
+                    omega,
+                    stiffness.iter().copied(),
+                    &mut dynamic,
+                );
+                lu.factor_solve(&mut dynamic, &mut angle)
+            };
+            if !solved || !angle.iter().all(|v| v.is_finite()) {
                 return Err(PhysicsError::Singular(format!(
                     "order {order} at {speed} rpm ({frequency_hz:.3} Hz) sits on an undamped resonance"
                 )));
@@ -108,7 +121,7 @@ pub fn forced_response(
                 let c_visc = viscous[c];
                 let twist = e.from_dof.map_or(Complex64::default(), |d| angle[d])
                     - e.to_dof.map_or(Complex64::default(), |d| angle[d]);
-                let torque_ref = Complex64::new(k, k * loss + omega * c_visc) * twist;
+                let torque_ref = element_z[c] * twist;
                 let torque_own = torque_ref / e.torque_ratio;
                 torques[c][q] = torque_own;
                 response.torque_amplitude_nm[c][q][s] = torque_own.norm_sqr().sqrt();
