@@ -6,3 +6,6 @@ pub mod peak;
 pub mod sweep;
 
 pub use sweep::{Response, forced_response};
+
+#[cfg(test)]
+mod tests;
