@@ -69,7 +69,8 @@ impl PeakSynthesizer {
     /// order.
     pub fn half_peak_to_peak(&mut self, amplitudes: &[Complex64]) -> f64 {
         self.synthesize(0.0, amplitudes).map_or(f64::NAN, |s| {
-            0.5 * (refined_max(s, 1.0) + refined_max(s, -1.0))
+            let (max, min) = refined_extremes(s);
+            0.5 * (max - min)
         })
     }
 
@@ -118,21 +119,30 @@ fn parabola_top(y0: f64, y1: f64, y2: f64) -> f64 {
     }
 }
 
-/// Largest `sign·x` of periodic samples, refined by a parabola through the top three.
-fn refined_max(samples: &[f64], sign: f64) -> f64 {
+/// Largest and smallest of periodic samples, each refined by a parabola through it and
+/// its neighbours (one pass for both).
+fn refined_extremes(samples: &[f64]) -> (f64, f64) {
     let n = samples.len();
-    let Some((i, _)) = samples
-        .iter()
-        .enumerate()
-        .max_by(|a, b| (sign * a.1).total_cmp(&(sign * b.1)))
-    else {
-        return 0.0;
+    if n == 0 {
+        return (0.0, 0.0);
+    }
+    let (mut hi, mut lo) = (0, 0);
+    for (j, &x) in samples.iter().enumerate() {
+        if x > samples[hi] {
+            hi = j;
+        }
+        if x < samples[lo] {
+            lo = j;
+        }
+    }
+    let around = |i: usize, sign: f64| {
+        parabola_top(
+            sign * samples[(i + n - 1) % n],
+            sign * samples[i],
+            sign * samples[(i + 1) % n],
+        )
     };
-    parabola_top(
-        sign * samples[(i + n - 1) % n],
-        sign * samples[i],
-        sign * samples[(i + 1) % n],
-    )
+    (around(hi, 1.0), -around(lo, -1.0))
 }
 
 /// Largest |x| of periodic samples, refined by a parabola through the top three.
@@ -184,9 +194,9 @@ mod tests {
     }
 
     /// `cos θ + cos 2θ` peaks at 2 (θ = 0) and dips to −9/8 (cos θ = −1/4): half the
-    /// peak-to-peak is 25/16 = 1.5625, well below the sum of amplitudes 2. The same with a
-    /// mean added and through the direct path (orders 1/3 and 2/3: `cos φ + cos 2φ` with
-    /// φ = θ/3). One order alone gives its amplitude. Tolerance 1e-3: the parabola's error.
+    /// peak-to-peak is 25/16 = 1.5625, well below the sum of amplitudes 2. The same through
+    /// the direct path (orders 1/3 and 2/3: `cos φ + cos 2φ` with φ = θ/3). One order alone
+    /// gives its amplitude. Tolerance 1e-3: the parabola's error.
     #[test]
     fn half_peak_to_peak_of_known_signals() {
         let two = [Complex64::new(1.0, 0.0), Complex64::new(1.0, 0.0)];
