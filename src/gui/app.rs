@@ -3,7 +3,7 @@
 //! unsaved and sends a new request to the simulation thread.
 
 use super::worker::{SimResult, Worker};
-use super::{editor, files, plots};
+use super::{editor, export, files, plots};
 use std::path::PathBuf;
 use std::sync::Arc;
 use torsim::modal::{Campbell, DampedMode};
@@ -63,6 +63,10 @@ pub struct TorsimApp {
     pub tab: Tab,
     /// Mode selected for the mode-shape view (0-based).
     pub selected_mode: usize,
+    /// What the plots show: selected crossing, response quantity, animation.
+    pub plots: plots::PlotState,
+    /// Exports in progress (CSV, PNG).
+    pub exports: export::Exports,
     /// Speed of the steady time run, rpm.
     pub trace_speed_rpm: f64,
     /// A status line (file saved, errors of file dialogs).
@@ -94,6 +98,8 @@ impl TorsimApp {
             results: Results::default(),
             tab: Tab::Campbell,
             selected_mode: 0,
+            plots: plots::PlotState::default(),
+            exports: export::Exports::default(),
             trace_speed_rpm,
             status: String::new(),
             files: files::FileDialogs::default(),
@@ -256,6 +262,7 @@ impl eframe::App for TorsimApp {
         self.close_prompt_ui(ui);
         self.receive();
         files::poll(self, ui.ctx());
+        export::poll(self, ui.ctx());
         ui.ctx()
             .send_viewport_cmd(egui::ViewportCommand::Title(self.title()));
         let undo = egui::KeyboardShortcut::new(egui::Modifiers::COMMAND, egui::Key::Z);

@@ -108,6 +108,16 @@ pub fn menu_ui(app: &mut TorsimApp, ui: &mut egui::Ui) {
                     ui.ctx().clone(),
                 ));
             }
+            ui.separator();
+            if ui.button("Export plot as CSV…").clicked() {
+                match super::plots::plot_data(app) {
+                    Some(data) => super::export::export_csv(&mut app.exports, ui.ctx(), data),
+                    None => app.status = "nothing to export yet".into(),
+                }
+            }
+            if ui.button("Export window as PNG…").clicked() {
+                super::export::export_png(&mut app.exports, ui.ctx());
+            }
         });
         ui.menu_button("Presets", |ui| {
             for p in PRESETS {

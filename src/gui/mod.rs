@@ -1,15 +1,19 @@
 //! The interactive simulator (eframe/egui): the driveline panel ([`editor`]), the plots
 //! ([`plots`]), files and menus ([`files`]), and the simulation thread ([`worker`]) that
-//! does all the computing off the GUI thread.
+//! does all the computing off the GUI thread. Plot data and the window are exported by
+//! [`export`].
 
 pub mod app;
 pub mod editor;
+pub mod export;
 pub mod files;
 pub mod plots;
 pub mod worker;
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_plots;
 
 use crate::cli::error::CliError;
 use std::path::PathBuf;

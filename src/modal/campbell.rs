@@ -6,6 +6,7 @@
 //! crossings are located by the sign change of `f_mode(n) − q·n/60` between grid speeds
 //! and interpolated linearly in rpm (exact for horizontal lines).
 
+use super::energy::strain_energy_shares;
 use super::undamped::{Mode, modes};
 use crate::physics::{PhysicsError, System};
 
@@ -33,6 +34,9 @@ pub struct Campbell {
     pub frequency_hz: Vec<Vec<f64>>,
     /// The modes (shapes at their own frequency).
     pub modes: Vec<Mode>,
+    /// `strain_energy_share[mode][element]`: share of each mode's strain energy in each
+    /// element of the system (element order; see [`super::energy`]), 0…1.
+    pub strain_energy_share: Vec<Vec<f64>>,
     /// Every crossing inside the speed grid, sorted by speed.
     pub crossings: Vec<Crossing>,
 }
@@ -91,11 +95,16 @@ pub fn campbell(
         }
     }
     crossings.sort_by(|a, b| a.speed_rpm.total_cmp(&b.speed_rpm));
+    let strain_energy_share = modes
+        .iter()
+        .map(|m| strain_energy_shares(system, m))
+        .collect();
     Ok(Campbell {
         speeds_rpm: speeds_rpm.to_vec(),
         orders: orders.to_vec(),
         frequency_hz,
         modes,
+        strain_energy_share,
         crossings,
     })
 }

@@ -1,10 +1,13 @@
 //! Natural frequencies and mode shapes ([`undamped`]), damped frequencies and damping
-//! ratios ([`damped`]), the Campbell diagram and its crossings ([`campbell`]).
+//! ratios ([`damped`]), the Campbell diagram and its crossings ([`campbell`]), where each
+//! mode keeps its strain energy ([`energy`]).
 
 pub mod campbell;
 pub mod damped;
+pub mod energy;
 pub mod undamped;
 
 pub use campbell::{Campbell, Crossing, campbell, critical_speed_rpm, speed_grid};
 pub use damped::{DampedMode, damped_modes};
+pub use energy::{strain_energy_j, strain_energy_shares};
 pub use undamped::{Mode, modes};

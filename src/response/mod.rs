@@ -7,3 +7,6 @@ pub mod sweep;
 mod tree;
 
 pub use sweep::{Response, forced_response};
+
+#[cfg(test)]
+mod tests;

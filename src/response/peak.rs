@@ -19,6 +19,8 @@ const DIRECT_SAMPLES: usize = 4320;
 /// Reusable synthesizer for one set of orders.
 pub struct PeakSynthesizer {
     orders: Vec<f64>,
+    /// Samples of the direct path (orders off the half-order grid).
+    direct: Vec<f64>,
     /// FFT path: (plan, bin of each order, spectrum and output buffers).
     fft: Option<FftPath>,
 }
@@ -50,6 +52,7 @@ impl PeakSynthesizer {
         });
         Self {
             orders: orders.to_vec(),
+            direct: Vec::new(),
             fft,
         }
     }
@@ -57,41 +60,89 @@ impl PeakSynthesizer {
     /// Largest |T| over a cycle for mean `mean_nm` and amplitudes `amplitudes_nm` (one per
     /// order, in the synthesizer's order).
     pub fn peak_abs(&mut self, mean_nm: f64, amplitudes_nm: &[Complex64]) -> f64 {
+        self.synthesize(mean_nm, amplitudes_nm)
+            .map_or(f64::NAN, refined_peak)
+    }
+
+    /// Half the peak-to-peak of `Σ_q Re(â_q e^{iqθ})` over a cycle, `(max − min)/2`, in the
+    /// unit of `amplitudes` (one per order). Never more than `Σ|â_q|`, equal to it for one
+    /// order.
+    pub fn half_peak_to_peak(&mut self, amplitudes: &[Complex64]) -> f64 {
+        self.synthesize(0.0, amplitudes).map_or(f64::NAN, |s| {
+            let (max, min) = refined_extremes(s);
+            0.5 * (max - min)
+        })
+    }
+
+    /// One cycle of `mean + Σ_q Re(â_q e^{iqθ})`, sampled evenly (FFT path) or over six
+    /// revolutions (direct path); `None` if the FFT fails.
+    fn synthesize(&mut self, mean: f64, amplitudes: &[Complex64]) -> Option<&[f64]> {
         match &mut self.fft {
             Some(path) => {
                 path.spectrum.fill(Complex64::default());
-                path.spectrum[0] = Complex64::new(mean_nm, 0.0);
-                for (&bin, &a) in path.bins.iter().zip(amplitudes_nm) {
+                path.spectrum[0] = Complex64::new(mean, 0.0);
+                for (&bin, &a) in path.bins.iter().zip(amplitudes) {
                     path.spectrum[bin] += a / 2.0;
                 }
                 let last = path.spectrum.len() - 1;
                 path.spectrum[last].im = 0.0;
-                if path
-                    .plan
+                path.plan
                     .process(&mut path.spectrum, &mut path.samples)
-                    .is_err()
-                {
-                    return f64::NAN;
-                }
-                refined_peak(&path.samples)
+                    .ok()?;
+                Some(&path.samples)
             }
             None => {
-                let samples: Vec<f64> = (0..DIRECT_SAMPLES)
-                    .map(|i| {
-                        let theta = 6.0 * std::f64::consts::TAU * i as f64 / DIRECT_SAMPLES as f64;
-                        mean_nm
-                            + self
-                                .orders
-                                .iter()
-                                .zip(amplitudes_nm)
-                                .map(|(&q, a)| (a * Complex64::from_polar(1.0, q * theta)).re)
-                                .sum::<f64>()
-                    })
-                    .collect();
-                refined_peak(&samples)
+                self.direct.clear();
+                self.direct.extend((0..DIRECT_SAMPLES).map(|i| {
+                    let theta = 6.0 * std::f64::consts::TAU * i as f64 / DIRECT_SAMPLES as f64;
+                    mean + self
+                        .orders
+                        .iter()
+                        .zip(amplitudes)
+                        .map(|(&q, a)| (a * Complex64::from_polar(1.0, q * theta)).re)
+                        .sum::<f64>()
+                }));
+                Some(&self.direct)
             }
         }
     }
+}
+
+/// The top of the parabola through three equally spaced samples around a local maximum
+/// `y1` (`y1` itself if they do not bend down).
+fn parabola_top(y0: f64, y1: f64, y2: f64) -> f64 {
+    let curvature = y0 - 2.0 * y1 + y2;
+    if curvature < 0.0 {
+        y1 - (y0 - y2) * (y0 - y2) / (8.0 * curvature)
+    } else {
+        y1
+    }
+}
+
+/// Largest and smallest of periodic samples, each refined by a parabola through it and
+/// its neighbours (one pass for both).
+fn refined_extremes(samples: &[f64]) -> (f64, f64) {
+    let n = samples.len();
+    if n == 0 {
+        return (0.0, 0.0);
+    }
+    let (mut hi, mut lo) = (0, 0);
+    for (j, &x) in samples.iter().enumerate() {
+        if x > samples[hi] {
+            hi = j;
+        }
+        if x < samples[lo] {
+            lo = j;
+        }
+    }
+    let around = |i: usize, sign: f64| {
+        parabola_top(
+            sign * samples[(i + n - 1) % n],
+            sign * samples[i],
+            sign * samples[(i + 1) % n],
+        )
+    };
+    (around(hi, 1.0), -around(lo, -1.0))
 }
 
 /// Largest |x| of periodic samples, refined by a parabola through the top three.
@@ -114,12 +165,7 @@ fn refined_peak(samples: &[f64]) -> f64 {
         samples[i].abs(),
         samples[(i + 1) % n].abs(),
     );
-    let curvature = y0 - 2.0 * y1 + y2;
-    if curvature < 0.0 {
-        y1 - (y0 - y2) * (y0 - y2) / (8.0 * curvature)
-    } else {
-        y1
-    }
+    parabola_top(y0, y1, y2)
 }
 
 #[cfg(test)]
@@ -145,5 +191,23 @@ mod tests {
             &[Complex64::new(-5.0, 0.0), Complex64::new(-5.0, 0.0)],
         );
         assert!((p - 20.0).abs() < 0.02, "{p}");
+    }
+
+    /// `cos θ + cos 2θ` peaks at 2 (θ = 0) and dips to −9/8 (cos θ = −1/4): half the
+    /// peak-to-peak is 25/16 = 1.5625, well below the sum of amplitudes 2. The same through
+    /// the direct path (orders 1/3 and 2/3: `cos φ + cos 2φ` with φ = θ/3). One order alone
+    /// gives its amplitude. Tolerance 1e-3: the parabola's error.
+    #[test]
+    fn half_peak_to_peak_of_known_signals() {
+        let two = [Complex64::new(1.0, 0.0), Complex64::new(1.0, 0.0)];
+        let mut s = PeakSynthesizer::new(&[1.0, 2.0]);
+        let h = s.half_peak_to_peak(&two);
+        assert!((h - 1.5625).abs() < 1e-3, "{h}");
+        let mut s = PeakSynthesizer::new(&[1.0 / 3.0, 2.0 / 3.0]);
+        let h = s.half_peak_to_peak(&two);
+        assert!((h - 1.5625).abs() < 1e-3, "{h}");
+        let mut s = PeakSynthesizer::new(&[6.0]);
+        let h = s.half_peak_to_peak(&[Complex64::from_polar(42.0, 1.1)]);
+        assert!((h - 42.0).abs() < 42e-3, "{h}");
     }
 }

@@ -25,6 +25,10 @@ pub struct Response {
     pub orders: Vec<f64>,
     /// `ias_amplitude_rpm[node][order][speed]`: IAS amplitude per order, rpm.
     pub ias_amplitude_rpm: Vec<Vec<Vec<f64>>>,
+    /// `ias_half_peak_to_peak_rpm[node][speed]`: half the peak-to-peak IAS over a cycle,
+    /// every order synthesized with its phase, rpm — the true counterpart of the sum of
+    /// the per-order amplitudes, which is only its upper bound.
+    pub ias_half_peak_to_peak_rpm: Vec<Vec<f64>>,
     /// Model connection index of each entry of the per-connection results (connections
     /// with an element; rigid gears carry no element and are left out).
     pub connections: Vec<usize>,
@@ -37,6 +41,9 @@ pub struct Response {
     /// order loses `ψ_T` times its elastic energy `½k|Δθ|²` per cycle — plus viscous
     /// `½cω²|Δθ|²` per order.
     pub power_loss_w: Vec<Vec<f64>>,
+    /// `power_loss_by_order_w[connection][order][speed]`: the part of `power_loss_w` each
+    /// order dissipates, W (orders at different frequencies add their mean powers).
+    pub power_loss_by_order_w: Vec<Vec<Vec<f64>>>,
 }
 
 /// The forced response of `system` to `excitation` at `speeds_rpm`.
@@ -53,10 +60,12 @@ pub fn forced_response(
         speeds_rpm: speeds_rpm.to_vec(),
         orders: orders.clone(),
         ias_amplitude_rpm: vec![vec![vec![0.0; n_speeds]; n_orders]; n_nodes],
+        ias_half_peak_to_peak_rpm: vec![vec![0.0; n_speeds]; n_nodes],
         connections: system.elements.iter().map(|e| e.connection).collect(),
         torque_amplitude_nm: vec![vec![vec![0.0; n_speeds]; n_orders]; n_conn],
         torque_peak_nm: vec![vec![0.0; n_speeds]; n_conn],
         power_loss_w: vec![vec![0.0; n_speeds]; n_conn],
+        power_loss_by_order_w: vec![vec![vec![0.0; n_speeds]; n_orders]; n_conn],
     };
     let mut dynamic = DMatrix::<Complex64>::zeros(n, n);
     let mut angle = vec![Complex64::default(); n];
@@ -74,6 +83,9 @@ pub fn forced_response(
         .map(|e| e.viscous_damping())
         .collect();
     let mut torques = vec![vec![Complex64::default(); n_orders]; n_conn];
+    // Referred angular velocity phasor of each DOF per order, rpm.
+    let mut velocities = vec![vec![Complex64::default(); n_orders]; n];
+    let mut half_pp = vec![0.0; n];
     let mut synthesizer = PeakSynthesizer::new(orders);
     for (s, &speed) in speeds_rpm.iter().enumerate() {
         let omega_ref = speed / RPM_PER_RAD_S;
@@ -116,6 +128,9 @@ pub fn forced_response(
                 response.ias_amplitude_rpm[node][q][s] =
                     ratio.abs() * omega * angle[dof].norm_sqr().sqrt() * RPM_PER_RAD_S;
             }
+            for (v, a) in velocities.iter_mut().zip(&angle) {
+                v[q] = Complex64::new(0.0, omega * RPM_PER_RAD_S) * a;
+            }
             for (c, e) in system.elements.iter().enumerate() {
                 let (k, loss) = stiffness[c];
                 let c_visc = viscous[c];
@@ -126,12 +141,25 @@ pub fn forced_response(
                 torques[c][q] = torque_own;
                 response.torque_amplitude_nm[c][q][s] = torque_own.norm_sqr().sqrt();
                 let energy_per_cycle = PI * twist.norm_sqr() * (k * loss + omega * c_visc);
+                response.power_loss_by_order_w[c][q][s] = energy_per_cycle * frequency_hz;
                 response.power_loss_w[c][s] += energy_per_cycle * frequency_hz;
             }
         }
         for (c, e) in system.elements.iter().enumerate() {
             let mean = system.mean_torque_nm[e.connection].unwrap_or(0.0);
             response.torque_peak_nm[c][s] = synthesizer.peak_abs(mean, &torques[c]);
+        }
+        // Nodes on one DOF share its phasors (scaled by |r|; a sign flips the whole wave).
+        for (h, v) in half_pp.iter_mut().zip(&velocities) {
+            *h = synthesizer.half_peak_to_peak(v);
+        }
+        for (node, (&dof, &ratio)) in system
+            .dof_of_node
+            .iter()
+            .zip(&system.speed_ratio)
+            .enumerate()
+        {
+            response.ias_half_peak_to_peak_rpm[node][s] = ratio.abs() * half_pp[dof];
         }
     }
     Ok(response)

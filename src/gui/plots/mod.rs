@@ -1,30 +1,126 @@
 //! The central panel: Campbell diagram, mode shapes, forced response and time traces,
-//! each with hover read-out (egui_plot's), legend, units and zoom. A panel whose analysis
-//! failed says why in place and keeps its last good plot. One plot per file.
+//! each with hover read-out, legend, units and zoom. A panel whose analysis failed says
+//! why in place and keeps its last good plot. One plot per file; what every plot shows
+//! can be exported as CSV ([`plot_data`], the "Export CSV…" button of the tab bar).
 
+mod animation;
 mod campbell;
+mod crossing;
 mod modes;
 mod response;
+mod series;
 mod traces;
+
+pub use super::export::PlotData;
+#[cfg(test)]
+pub use campbell::CAMPBELL_PLOT_ID;
+pub use campbell::crossing_at;
+#[cfg(test)]
+pub use crossing::crossing_response;
+pub use response::Quantity;
+#[cfg(test)]
+pub use response::matters;
 
 use super::app::{Tab, TorsimApp};
 use egui::{Color32, Ui};
 
-const MODE_COLORS: [Color32; 6] = [
-    Color32::from_rgb(31, 95, 191),
-    Color32::from_rgb(214, 39, 40),
-    Color32::from_rgb(44, 160, 44),
-    Color32::from_rgb(148, 103, 189),
-    Color32::from_rgb(255, 127, 14),
-    Color32::from_rgb(23, 190, 207),
+const MODE_COLORS: [Color32; 10] = [
+    Color32::from_rgb(77, 139, 245),
+    Color32::from_rgb(235, 80, 70),
+    Color32::from_rgb(80, 185, 80),
+    Color32::from_rgb(175, 125, 230),
+    Color32::from_rgb(255, 150, 40),
+    Color32::from_rgb(40, 200, 215),
+    Color32::from_rgb(200, 130, 95),
+    Color32::from_rgb(240, 130, 200),
+    Color32::from_rgb(200, 200, 70),
+    Color32::from_rgb(160, 160, 160),
 ];
 
-/// The colour of mode `i` (0-based), the same in every plot.
+/// The colour of mode `i` (0-based), the same in every plot; also used for the `i`-th
+/// series of a plot.
 pub fn mode_color(i: usize) -> Color32 {
     MODE_COLORS[i % MODE_COLORS.len()]
 }
 
-/// Tabs and the selected plot.
+/// A crossing of the Campbell diagram, named by what survives an edit: its order and mode.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CrossingKey {
+    /// Engine order.
+    pub order: f64,
+    /// Mode number, from 1.
+    pub mode: usize,
+}
+
+/// What the plots show, kept in the app across edits.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PlotState {
+    /// The crossing selected on the Campbell diagram (kept while the edited model still
+    /// has a crossing of that order and mode).
+    pub crossing: Option<CrossingKey>,
+    /// Station of the selected crossing's forced response; `None`: where that order's
+    /// IAS amplitude at the crossing speed is largest.
+    pub crossing_station: Option<String>,
+    /// Quantity of the forced-response tab.
+    pub quantity: Quantity,
+    /// Station (node name) of the IAS response.
+    pub station: Option<String>,
+    /// Connection (name) of the torque and power-loss responses.
+    pub connection: Option<String>,
+    /// The mode-shape animation runs.
+    pub playing: bool,
+    /// Peak rotation drawn for the largest modal amplitude, degrees.
+    pub amplitude_deg: f32,
+    /// Phase of the animation, cycles.
+    pub phase_cycles: f64,
+}
+
+impl Default for PlotState {
+    fn default() -> Self {
+        Self {
+            crossing: None,
+            crossing_station: None,
+            quantity: Quantity::Ias,
+            station: None,
+            connection: None,
+            playing: true,
+            amplitude_deg: 25.0,
+            phase_cycles: 0.0,
+        }
+    }
+}
+
+/// The data the current tab shows, for export (`None` while it has nothing to show).
+pub fn plot_data(app: &TorsimApp) -> Option<PlotData> {
+    match app.tab {
+        Tab::Campbell => campbell::plot_data(app),
+        Tab::Modes => modes::plot_data(app),
+        Tab::Response => response::plot_data(app),
+        Tab::Traces => traces_data(app),
+    }
+}
+
+/// The time traces as plotted by `traces.rs`: IAS of every node over time. The traces
+/// plot's owner may move this next to the plot (it is the one place to change).
+fn traces_data(app: &TorsimApp) -> Option<PlotData> {
+    let t = app.results.trace.as_ref()?;
+    Some(PlotData {
+        title: format!("time traces at {:.0} rpm", app.trace_speed_rpm),
+        x_label: "time [s]".into(),
+        x_names: Vec::new(),
+        columns: t
+            .node_names
+            .iter()
+            .zip(&t.speed_rpm)
+            .map(|(name, values)| {
+                let points = t.time_s.iter().zip(values).map(|(&x, &v)| [x, v]);
+                (format!("IAS {name} [rpm]"), points.collect())
+            })
+            .collect(),
+    })
+}
+
+/// Tabs, the export button and the selected plot.
 pub fn central_ui(app: &mut TorsimApp, ui: &mut Ui) {
     ui.horizontal(|ui| {
         for (tab, label) in [
@@ -35,6 +131,21 @@ pub fn central_ui(app: &mut TorsimApp, ui: &mut Ui) {
         ] {
             ui.selectable_value(&mut app.tab, tab, label);
         }
+        ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
+            let available = match app.tab {
+                Tab::Campbell | Tab::Modes => app.results.campbell.is_some(),
+                Tab::Response => app.results.response.is_some(),
+                Tab::Traces => app.results.trace.is_some(),
+            };
+            let button = ui
+                .add_enabled(available, egui::Button::new("Export CSV…"))
+                .on_hover_text("the data of this plot, one column per series, with units");
+            if button.clicked()
+                && let Some(data) = plot_data(app)
+            {
+                super::export::export_csv(&mut app.exports, ui.ctx(), data);
+            }
+        });
     });
     ui.separator();
     let panel = match app.tab {

@@ -1,62 +1,357 @@
-//! Forced response over speed.
+//! Forced response over speed: IAS amplitude per station, torque amplitude per connection
+//! or power loss per connection, each order that matters and what they add up to.
 
+use super::series::{Series, grid_125, hover_label, plot_data as series_data};
+use super::{PlotData, mode_color};
 use crate::gui::app::TorsimApp;
 use egui::{Color32, Ui};
-use egui_plot::{Legend, Line, Plot, PlotPoints};
+use egui_plot::{Legend, Plot, PlotBounds, Span, VLine};
+use torsim::model::ConnectionKind;
+use torsim::response::Response;
 
-/// IAS amplitude over speed at a node: each order that matters, and their sum.
+/// An order is drawn when at some speed it is at least this share of the sum of all
+/// orders there…
+const SHARE_SHOWN: f64 = 0.05;
+/// …and at least this share of the sum's largest value (not for noise at quiet speeds).
+const FLOOR_SHOWN: f64 = 0.002;
+
+/// True when an order's `values` matter somewhere next to the `sum` of all orders.
+pub fn matters(values: &[f64], sum: &[f64], top: f64) -> bool {
+    values
+        .iter()
+        .zip(sum)
+        .any(|(&v, &s)| v >= SHARE_SHOWN * s && v >= FLOOR_SHOWN * top && v > 0.0)
+}
+
+/// What the forced-response tab shows.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Quantity {
+    /// IAS amplitude at a station, rpm.
+    Ias,
+    /// Torque amplitude in a connection, N·m.
+    Torque,
+    /// Power dissipated in a connection (rubber: DIN 740; shaft: viscous), W.
+    PowerLoss,
+}
+
+impl Quantity {
+    /// The selector's text.
+    pub fn label(self) -> &'static str {
+        match self {
+            Quantity::Ias => "IAS amplitude per station",
+            Quantity::Torque => "torque amplitude per connection",
+            Quantity::PowerLoss => "power loss per connection",
+        }
+    }
+
+    /// The y axis with its unit.
+    pub fn y_label(self) -> &'static str {
+        match self {
+            Quantity::Ias => "IAS amplitude [rpm] (zero-to-peak, own shaft)",
+            Quantity::Torque => "torque [N·m] (own shaft)",
+            Quantity::PowerLoss => "power loss [W]",
+        }
+    }
+
+    fn unit(self) -> &'static str {
+        match self {
+            Quantity::Ias => "rpm",
+            Quantity::Torque => "N·m",
+            Quantity::PowerLoss => "W",
+        }
+    }
+}
+
+fn along(speeds: &[f64], values: &[f64]) -> Vec<[f64; 2]> {
+    speeds.iter().zip(values).map(|(&n, &v)| [n, v]).collect()
+}
+
+/// The lines of `quantity` at `index` (a node for IAS, an entry of `r.connections`
+/// otherwise): every order that [`matters`], then the totals. `mean_nm` is the
+/// connection's mean torque, drawn with the torque.
+pub fn response_series(
+    r: &Response,
+    quantity: Quantity,
+    index: usize,
+    mean_nm: Option<f64>,
+) -> Vec<Series> {
+    let per_order = match quantity {
+        Quantity::Ias => r.ias_amplitude_rpm.get(index),
+        Quantity::Torque => r.torque_amplitude_nm.get(index),
+        Quantity::PowerLoss => r.power_loss_by_order_w.get(index),
+    };
+    let Some(per_order) = per_order else {
+        return Vec::new();
+    };
+    let what = match quantity {
+        Quantity::Ias => "IAS amplitude",
+        Quantity::Torque => "torque amplitude",
+        Quantity::PowerLoss => "power loss",
+    };
+    let unit = quantity.unit();
+    let n_speeds = r.speeds_rpm.len();
+    let sum: Vec<f64> = (0..n_speeds)
+        .map(|s| per_order.iter().map(|v| v[s]).sum())
+        .collect();
+    let top = sum.iter().copied().fold(0.0, f64::max);
+    // Colour by the order's place in the list: an order keeps its colour across
+    // stations and quantities.
+    let mut out: Vec<Series> = r
+        .orders
+        .iter()
+        .zip(per_order)
+        .enumerate()
+        .filter(|(_, (_, v))| matters(v, &sum, top))
+        .map(|(k, (q, v))| {
+            Series::new(
+                format!("order {q}"),
+                format!("order {q} {what} [{unit}]"),
+                along(&r.speeds_rpm, v),
+            )
+            .color(mode_color(k))
+        })
+        .collect();
+    let strong = Color32::from_gray(235);
+    match quantity {
+        Quantity::Ias => {
+            out.push(
+                Series::new(
+                    "Σ orders (upper bound)",
+                    "sum of order amplitudes (upper bound) [rpm]",
+                    along(&r.speeds_rpm, &sum),
+                )
+                .color(Color32::from_gray(150))
+                .dashed(),
+            );
+            if let Some(v) = r.ias_half_peak_to_peak_rpm.get(index) {
+                out.push(
+                    Series::new(
+                        "all orders: (max − min)/2",
+                        "all orders synthesized: half peak-to-peak IAS [rpm]",
+                        along(&r.speeds_rpm, v),
+                    )
+                    .color(strong)
+                    .width(2.5),
+                );
+            }
+        }
+        Quantity::Torque => {
+            out.push(
+                Series::new(
+                    "Σ orders (upper bound of the oscillation)",
+                    "sum of order amplitudes (upper bound) [N·m]",
+                    along(&r.speeds_rpm, &sum),
+                )
+                .color(Color32::from_gray(150))
+                .dashed(),
+            );
+            if let Some(v) = r.torque_peak_nm.get(index) {
+                out.push(
+                    Series::new(
+                        "peak |T| over a cycle (mean + all orders)",
+                        "peak torque over a cycle, mean and all orders synthesized [N·m]",
+                        along(&r.speeds_rpm, v),
+                    )
+                    .color(strong)
+                    .width(2.5),
+                );
+            }
+            if let (Some(m), Some(&n0), Some(&n1)) =
+                (mean_nm, r.speeds_rpm.first(), r.speeds_rpm.last())
+            {
+                out.push(
+                    Series::new("mean torque", "mean torque [N·m]", vec![[n0, m], [n1, m]])
+                        .color(Color32::from_gray(190))
+                        .width(1.0)
+                        .dashed(),
+                );
+            }
+        }
+        Quantity::PowerLoss => {
+            if let Some(v) = r.power_loss_w.get(index) {
+                out.push(
+                    Series::new(
+                        "all orders (sum, exact)",
+                        "power loss, all orders [W]",
+                        along(&r.speeds_rpm, v),
+                    )
+                    .color(strong)
+                    .width(2.5),
+                );
+            }
+        }
+    }
+    out
+}
+
+/// The node or response entry the tab shows, and its name.
+fn target(app: &TorsimApp, r: &Response) -> (usize, String) {
+    let model = &app.model;
+    match app.plots.quantity {
+        Quantity::Ias => {
+            let wanted = app.plots.station.as_deref();
+            let k = wanted
+                .and_then(|w| model.inertias.iter().position(|n| n.name == w))
+                .filter(|&k| k < r.ias_amplitude_rpm.len())
+                .unwrap_or(0);
+            (k, model.inertias.get(k).map_or("", |n| &n.name).to_string())
+        }
+        Quantity::Torque | Quantity::PowerLoss => {
+            let name = |c: usize| model.connections.get(c).map_or("", |x| &x.name);
+            let is_rubber = |c: usize| {
+                model
+                    .connections
+                    .get(c)
+                    .is_some_and(|x| matches!(x.kind, ConnectionKind::Rubber(_)))
+            };
+            let k = app
+                .plots
+                .connection
+                .as_deref()
+                .and_then(|w| r.connections.iter().position(|&c| name(c) == w))
+                .or_else(|| r.connections.iter().position(|&c| is_rubber(c)))
+                .unwrap_or(0);
+            (k, r.connections.get(k).map_or("", |&c| name(c)).to_string())
+        }
+    }
+}
+
+/// The series on screen and their title.
+fn current(app: &TorsimApp) -> Option<(String, Vec<Series>)> {
+    let r = app.results.response.as_ref()?;
+    let (index, name) = target(app, r);
+    let quantity = app.plots.quantity;
+    let mean = match quantity {
+        Quantity::Torque => app.results.campbell.as_ref().and_then(|c| {
+            let connection = *r.connections.get(index)?;
+            c.0.mean_torque_nm.get(connection).copied().flatten()
+        }),
+        _ => None,
+    };
+    let title = format!(
+        "{} at {name}",
+        quantity
+            .label()
+            .replace(" per station", "")
+            .replace(" per connection", "")
+    );
+    Some((title, response_series(r, quantity, index, mean)))
+}
+
+/// The forced-response data on screen, for export.
+pub fn plot_data(app: &TorsimApp) -> Option<PlotData> {
+    let (title, series) = current(app)?;
+    Some(series_data(
+        format!("forced response {title}"),
+        "engine speed [rpm]",
+        &series,
+    ))
+}
+
+/// Quantity and station/connection; true when "zoom to the operating range" was clicked.
+fn selectors_ui(app: &mut TorsimApp, r: &Response, ui: &mut Ui) -> bool {
+    ui.horizontal(|ui| {
+        let state = &mut app.plots;
+        egui::ComboBox::from_label("quantity")
+            .selected_text(state.quantity.label())
+            .show_ui(ui, |ui| {
+                for q in [Quantity::Ias, Quantity::Torque, Quantity::PowerLoss] {
+                    ui.selectable_value(&mut state.quantity, q, q.label());
+                }
+            });
+        let (_, current) = target(app, r);
+        let model = &app.model;
+        let (label, choices): (&str, Vec<String>) = match app.plots.quantity {
+            Quantity::Ias => (
+                "station",
+                model.inertias.iter().map(|n| n.name.clone()).collect(),
+            ),
+            _ => (
+                "connection",
+                r.connections
+                    .iter()
+                    .filter_map(|&c| model.connections.get(c))
+                    .map(|c| format!("{} ({})", c.name, c.kind.kind_str()))
+                    .collect(),
+            ),
+        };
+        egui::ComboBox::from_label(label)
+            .selected_text(&current)
+            .show_ui(ui, |ui| {
+                for choice in choices {
+                    let name = choice.split(" (").next().unwrap_or("").to_string();
+                    if ui.selectable_label(name == current, &choice).clicked() {
+                        match app.plots.quantity {
+                            Quantity::Ias => app.plots.station = Some(name),
+                            _ => app.plots.connection = Some(name),
+                        }
+                    }
+                }
+            });
+        app.model.operation.operating_range_rpm.is_some()
+            && ui
+                .button("Zoom to the operating range")
+                .on_hover_text("double-click the plot to see the whole sweep again")
+                .clicked()
+    })
+    .inner
+}
+
+/// The forced-response tab.
 pub fn response_ui(app: &mut TorsimApp, ui: &mut Ui) {
     let Some(r) = app.results.response.clone() else {
         ui.label("computing the forced response…");
         return;
     };
-    let names: Vec<String> = app.model.inertias.iter().map(|n| n.name.clone()).collect();
-    let id = ui.make_persistent_id("response_node");
-    let mut node: usize = ui
-        .data(|d| d.get_temp(id))
-        .unwrap_or(0)
-        .min(names.len().saturating_sub(1));
-    egui::ComboBox::from_label("station")
-        .selected_text(names.get(node).cloned().unwrap_or_default())
-        .show_ui(ui, |ui| {
-            for (k, n) in names.iter().enumerate() {
-                ui.selectable_value(&mut node, k, n);
-            }
-        });
-    ui.data_mut(|d| d.insert_temp(id, node));
-    let per_order = &r.ias_amplitude_rpm[node];
-    let top = per_order.iter().flatten().copied().fold(0.0, f64::max);
+    let zoom = selectors_ui(app, &r, ui);
+    let Some((_, series)) = current(app) else {
+        return;
+    };
+    let quantity = app.plots.quantity;
+    let operating = app.model.operation.operating_range_rpm;
+    let marker = app.plots.crossing.and_then(|k| super::crossing_at(app, k));
     Plot::new("response")
-        .legend(Legend::default())
+        .legend(Legend::default().follow_insertion_order(true))
         .x_axis_label("engine speed [rpm]")
-        .y_axis_label("IAS amplitude [rpm] (zero-to-peak)")
+        .y_axis_label(quantity.y_label())
+        .x_grid_spacer(grid_125)
+        .y_grid_spacer(grid_125)
+        .label_formatter(hover_label("rpm", quantity.unit()))
+        .include_y(0.0)
         .show(ui, |plot| {
-            let mut sum = vec![0.0; r.speeds_rpm.len()];
-            for (q, values) in r.orders.iter().zip(per_order) {
-                for (s, v) in sum.iter_mut().zip(values) {
-                    *s += v;
-                }
-                if values.iter().copied().fold(0.0, f64::max) < 0.02 * top {
-                    continue;
-                }
-                let points: PlotPoints = r
-                    .speeds_rpm
-                    .iter()
-                    .zip(values)
-                    .map(|(&n, &v)| [n, v])
-                    .collect();
-                plot.line(Line::new(format!("order {q}"), points));
+            if let Some([lo, hi]) = operating {
+                plot.span(
+                    Span::new("operating range", lo..=hi)
+                        .fill(Color32::from_rgba_unmultiplied(60, 160, 60, 25)),
+                );
             }
-            let points: PlotPoints = r
-                .speeds_rpm
-                .iter()
-                .zip(&sum)
-                .map(|(&n, &v)| [n, v])
-                .collect();
-            plot.line(
-                Line::new("Σ orders (upper bound)", points)
-                    .color(Color32::WHITE)
-                    .width(2.0),
-            );
+            if let Some(x) = marker {
+                plot.vline(
+                    VLine::new(
+                        format!(
+                            "order {} × mode {} at {:.0} rpm",
+                            x.order, x.mode, x.speed_rpm
+                        ),
+                        x.speed_rpm,
+                    )
+                    .color(Color32::from_rgb(255, 200, 0))
+                    .allow_hover(false),
+                );
+            }
+            for s in &series {
+                plot.line(s.line());
+            }
+            if zoom && let Some([lo, hi]) = operating {
+                let top = series
+                    .iter()
+                    .flat_map(|s| &s.points)
+                    .filter(|p| (lo..=hi).contains(&p[0]))
+                    .map(|p| p[1])
+                    .fold(0.0, f64::max);
+                plot.set_plot_bounds(PlotBounds::from_min_max(
+                    [lo, 0.0],
+                    [hi, 1.1 * top.max(1e-9)],
+                ));
+            }
         });
 }
