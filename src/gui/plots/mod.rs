@@ -4,7 +4,10 @@
 
 mod campbell;
 mod modes;
+mod recording;
 mod response;
+mod run_controls;
+mod stft;
 mod traces;
 
 use super::app::{Tab, TorsimApp};
