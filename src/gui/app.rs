@@ -2,8 +2,12 @@
 //! Edits go through [`TorsimApp::commit`], which keeps undo history, marks the model
 //! unsaved and sends a new request to the simulation thread.
 
+use super::recording_job::RecordingView;
+use super::trace_data::LiveTrace;
+use super::trace_job::RunAnalysis;
+use super::trace_state::{self, TraceState};
 use super::worker::{SimResult, Worker};
-use super::{editor, export, files, plots};
+use super::{editor, export, files, plots, recordings};
 use std::path::PathBuf;
 use std::sync::Arc;
 use torsim::modal::{Campbell, DampedMode};
@@ -21,7 +25,7 @@ pub enum Tab {
     Modes,
     /// Forced response over speed.
     Response,
-    /// Time traces of a steady run.
+    /// Time traces of a steady run or a run-up, recordings.
     Traces,
 }
 
@@ -35,10 +39,20 @@ pub struct Results {
     pub campbell: Option<Arc<(System, Campbell, Vec<DampedMode>)>>,
     /// Forced response.
     pub response: Option<Arc<Response>>,
-    /// Steady time run.
+    /// The finished time run.
     pub trace: Option<Arc<Simulation>>,
     /// Progress of the time run.
     pub trace_progress: f32,
+    /// What the time run runs, for a person (`"run-up 1000 to 2000 rpm in 60 s"`).
+    pub trace_label: String,
+    /// The time run's samples as they arrive.
+    pub live: Option<LiveTrace>,
+    /// Orders and spectrograms of the finished time run.
+    pub trace_analysis: Option<Arc<RunAnalysis>>,
+    /// The open recording, read and analysed.
+    pub recording: Option<Arc<RecordingView>>,
+    /// Generation of the last time run cancelled.
+    pub trace_cancelled: Option<u64>,
     /// Errors by panel.
     pub errors: Vec<(&'static str, String)>,
 }
@@ -69,6 +83,10 @@ pub struct TorsimApp {
     pub exports: export::Exports,
     /// Speed of the steady time run, rpm.
     pub trace_speed_rpm: f64,
+    /// The traces tab: run-up settings, the open recording, the view.
+    pub traces: TraceState,
+    /// Measured stations (nodes) of the open recording, marked in the schematic.
+    pub stations: Vec<String>,
     /// A status line (file saved, errors of file dialogs).
     pub status: String,
     /// Pending file dialog results.
@@ -101,6 +119,8 @@ impl TorsimApp {
             plots: plots::PlotState::default(),
             exports: export::Exports::default(),
             trace_speed_rpm,
+            traces: TraceState::default(),
+            stations: Vec::new(),
             status: String::new(),
             files: files::FileDialogs::default(),
             close_prompt: false,
@@ -118,11 +138,23 @@ impl TorsimApp {
                 self.invalid = None;
                 self.results.generation += 1;
                 self.results.errors.clear();
-                self.worker
-                    .request(self.results.generation, &self.model, self.trace_speed_rpm);
+                let spec = self.traces.spec(&self.model, self.trace_speed_rpm);
+                self.results.trace_progress = 0.0;
+                self.worker.request(
+                    self.results.generation,
+                    &self.model,
+                    spec,
+                    self.traces.recording.clone(),
+                    self.stations.clone(),
+                );
             }
             Err(e) => self.invalid = Some(e.to_string()),
         }
+    }
+
+    /// Stops the running time run; the other results stay.
+    pub fn cancel_trace(&self) {
+        self.worker.cancel(self.results.generation);
     }
 
     /// Records an edit: `before` goes on the undo stack, the model is unsaved, results are
@@ -169,7 +201,7 @@ impl TorsimApp {
                 SimResult::Error(g, panel, e) if g == current => {
                     self.results.errors.push((panel, e))
                 }
-                _ => {}
+                other => trace_state::receive(self, other),
             }
         }
     }
@@ -263,6 +295,7 @@ impl eframe::App for TorsimApp {
         self.receive();
         files::poll(self, ui.ctx());
         export::poll(self, ui.ctx());
+        recordings::poll(self);
         ui.ctx()
             .send_viewport_cmd(egui::ViewportCommand::Title(self.title()));
         let undo = egui::KeyboardShortcut::new(egui::Modifiers::COMMAND, egui::Key::Z);

@@ -91,6 +91,9 @@ pub fn menu_ui(app: &mut TorsimApp, ui: &mut egui::Ui) {
             if ui.button("Open…").clicked() {
                 app.files.open = Some(dialog(|d| d.pick_file(), ui.ctx().clone()));
             }
+            if ui.button("Open recording…").clicked() {
+                super::recordings::open_dialog(app, ui.ctx());
+            }
             if ui.button("Save").clicked() {
                 match app.path.clone() {
                     Some(path) => save_to(app, path),

@@ -8,12 +8,21 @@ pub mod editor;
 pub mod export;
 pub mod files;
 pub mod plots;
+pub mod recording_job;
+pub mod recordings;
+pub mod spectrogram;
+pub mod trace_data;
+pub mod trace_job;
+pub mod trace_series;
+pub mod trace_state;
 pub mod worker;
 
 #[cfg(test)]
 mod tests;
 #[cfg(test)]
 mod tests_plots;
+#[cfg(test)]
+mod tests_traces;
 
 use crate::cli::error::CliError;
 use std::path::PathBuf;

@@ -1,10 +1,18 @@
 //! The simulation thread. The GUI thread never computes: on every edit it sends a
 //! [`SimRequest`] with a new generation; the worker drops stale requests (only the newest
 //! matters), computes the cheap results first (modes, Campbell, forced response) and sends
-//! each as soon as it is ready, then a steady time run. A newer request cancels the run in
-//! progress. Every send wakes the GUI (`request_repaint`).
+//! each as soon as it is ready, then reads the open recording ([`recording_job`]) and
+//! runs the time run in chunks ([`trace_job`]). A newer request, or the Cancel button,
+//! cancels the run in progress. Every send wakes the GUI (`request_repaint`).
+//!
+//! [`recording_job`]: super::recording_job
+//! [`trace_job`]: super::trace_job
 
+use super::recording_job::{RecordingCache, RecordingView};
+use super::trace_data::{TraceChunk, TraceLayout, TraceSpec};
+use super::trace_job::{self, RunAnalysis};
 use crossbeam_channel::{Receiver, Sender, TryRecvError, unbounded};
+use std::path::PathBuf;
 use std::sync::Arc;
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::thread::JoinHandle;
@@ -12,7 +20,7 @@ use torsim::modal::{Campbell, DampedMode, campbell, damped_modes, speed_grid};
 use torsim::model::Model;
 use torsim::physics::{Excitation, OperatingPoint, System};
 use torsim::response::{Response, forced_response};
-use torsim::transient::{RunKind, RunOptions, Simulation, simulate};
+use torsim::transient::Simulation;
 
 /// What the GUI asks for.
 #[derive(Debug, Clone)]
@@ -23,8 +31,12 @@ pub enum SimRequest {
         generation: u64,
         /// The model as edited.
         model: Box<Model>,
-        /// Speed of the steady time run, rpm.
-        trace_speed_rpm: f64,
+        /// The time run.
+        trace: TraceSpec,
+        /// The open recording (CSV), if any.
+        recording: Option<PathBuf>,
+        /// Nodes shown at first in the time traces (all when empty).
+        stations: Vec<String>,
     },
     /// Stop the thread.
     Quit,
@@ -37,11 +49,24 @@ pub enum SimResult {
     Campbell(u64, Arc<(System, Campbell, Vec<DampedMode>)>),
     /// The forced response over the speed range.
     Response(u64, Arc<Response>),
-    /// A steady time run.
+    /// The time run starts settling; what runs, for a person.
+    TraceRunning(u64, String),
+    /// The time run starts recording: the layout of its chunks.
+    TraceStarted(u64, Arc<TraceLayout>),
+    /// Samples of the time run since the last chunk (a few per second).
+    TraceChunk(u64, Arc<TraceChunk>),
+    /// The finished time run.
     Trace(u64, Arc<Simulation>),
+    /// Orders and spectrograms of the finished time run.
+    TraceAnalysis(u64, Arc<RunAnalysis>),
+    /// The open recording, read and analysed.
+    Recording(u64, Arc<RecordingView>),
     /// Progress of the time run, 0–1.
     Progress(u64, f32),
-    /// An analysis failed; `0` names which (`"modes"`, `"response"`, `"trace"`).
+    /// The time run was cancelled (a newer request, or the Cancel button).
+    Cancelled(u64),
+    /// An analysis failed; `0` names which (`"modes"`, `"response"`, `"trace"`,
+    /// `"recording"`).
     Error(u64, &'static str, String),
 }
 
@@ -51,6 +76,7 @@ pub struct Worker {
     /// Results, newest last.
     pub results: Receiver<SimResult>,
     latest: Arc<AtomicU64>,
+    cancelled: Arc<AtomicU64>,
     handle: Option<JoinHandle<()>>,
 }
 
@@ -60,27 +86,43 @@ impl Worker {
         let (requests, inbox) = unbounded::<SimRequest>();
         let (outbox, results) = unbounded::<SimResult>();
         let latest = Arc::new(AtomicU64::new(0));
-        let newest = latest.clone();
+        let cancelled = Arc::new(AtomicU64::new(0));
+        let (newest, cancel) = (latest.clone(), cancelled.clone());
         let handle = std::thread::Builder::new()
             .name("torsim-sim".into())
-            .spawn(move || worker_loop(&inbox, &outbox, &newest, &wake))
+            .spawn(move || worker_loop(&inbox, &outbox, &newest, &cancel, &wake))
             .ok();
         Self {
             requests,
             results,
             latest,
+            cancelled,
             handle,
         }
     }
 
     /// Asks for results of `model`; older requests become stale at once.
-    pub fn request(&self, generation: u64, model: &Model, trace_speed_rpm: f64) {
+    pub fn request(
+        &self,
+        generation: u64,
+        model: &Model,
+        trace: TraceSpec,
+        recording: Option<PathBuf>,
+        stations: Vec<String>,
+    ) {
         self.latest.store(generation, Ordering::SeqCst);
         let _ = self.requests.send(SimRequest::Run {
             generation,
             model: Box::new(model.clone()),
-            trace_speed_rpm,
+            trace,
+            recording,
+            stations,
         });
+    }
+
+    /// Stops the time run of `generation` (its other results stay).
+    pub fn cancel(&self, generation: u64) {
+        self.cancelled.store(generation, Ordering::SeqCst);
     }
 }
 
@@ -98,8 +140,10 @@ fn worker_loop(
     inbox: &Receiver<SimRequest>,
     outbox: &Sender<SimResult>,
     latest: &AtomicU64,
+    cancelled: &AtomicU64,
     wake: &dyn Fn(),
 ) {
+    let mut recordings = RecordingCache::default();
     while let Ok(mut request) = inbox.recv() {
         // Only the newest request matters.
         loop {
@@ -112,31 +156,77 @@ fn worker_loop(
         let SimRequest::Run {
             generation,
             model,
-            trace_speed_rpm,
+            trace,
+            recording,
+            stations,
         } = request
         else {
             return;
         };
-        let stale = || latest.load(Ordering::SeqCst) != generation;
+        let stale = || {
+            latest.load(Ordering::SeqCst) != generation
+                || cancelled.load(Ordering::SeqCst) == generation
+        };
         let send = |r: SimResult| {
             let _ = outbox.send(r);
             wake();
         };
-        compute(generation, &model, trace_speed_rpm, &stale, &send);
+        let Some(system) = compute(generation, &model, &stale, &send) else {
+            continue;
+        };
+        let view = match &recording {
+            None => None,
+            Some(path) => match recordings.load(path, &model, &system) {
+                Ok(view) => {
+                    send(SimResult::Recording(generation, view.clone()));
+                    Some(view)
+                }
+                Err(e) => {
+                    send(SimResult::Error(generation, "recording", e));
+                    None
+                }
+            },
+        };
+        if stale() {
+            send(SimResult::Cancelled(generation));
+            continue;
+        }
+        let stations = match &view {
+            Some(v) => v.stations(),
+            None => stations,
+        };
+        trace_job::run(
+            generation,
+            &model,
+            &system,
+            &trace,
+            view.as_deref(),
+            &stations,
+            &stale,
+            &send,
+        );
     }
 }
 
-/// Computes one request's results, cheapest first, stopping as soon as it is stale.
+/// Computes one request's cheap results (modes, Campbell, forced response) and returns
+/// the system for the time run, or `None` when the model fails or the request is stale.
 pub fn compute(
     generation: u64,
     model: &Model,
-    trace_speed_rpm: f64,
     stale: &dyn Fn() -> bool,
     send: &dyn Fn(SimResult),
-) {
+) -> Option<System> {
     let system = match System::new(model, OperatingPoint::default()) {
         Ok(s) => s,
-        Err(e) => return send(SimResult::Error(generation, "modes", e.to_string())),
+        Err(e) => {
+            send(SimResult::Error(generation, "modes", e.to_string()));
+            send(SimResult::Error(
+                generation,
+                "trace",
+                format!("no time run: {e}"),
+            ));
+            return None;
+        }
     };
     let [from, to] = model.operation.speed_range_rpm.unwrap_or([100.0, 3000.0]);
     let speeds = speed_grid(from, to, (to - from) / 200.0);
@@ -152,32 +242,12 @@ pub fn compute(
         Err(e) => send(SimResult::Error(generation, "modes", e.to_string())),
     }
     if stale() {
-        return;
+        return None;
     }
     let excitation = Excitation::new(model, &system, 1.0, &orders);
     match forced_response(&system, &excitation, &speeds) {
         Ok(r) => send(SimResult::Response(generation, Arc::new(r))),
         Err(e) => send(SimResult::Error(generation, "response", e.to_string())),
     }
-    if stale() {
-        return;
-    }
-    let kind = RunKind::Steady {
-        speed_rpm: trace_speed_rpm,
-        duration_s: 0.5,
-    };
-    let options = RunOptions {
-        rate_hz: 4096.0,
-        max_settle_s: 10.0,
-        ..RunOptions::default()
-    };
-    let mut progress = |f: f64| {
-        send(SimResult::Progress(generation, f as f32));
-        !stale()
-    };
-    match simulate(model, kind, options, &mut progress) {
-        Ok(sim) => send(SimResult::Trace(generation, Arc::new(sim))),
-        Err(torsim::transient::TransientError::Cancelled { .. }) => {}
-        Err(e) => send(SimResult::Error(generation, "trace", e.to_string())),
-    }
+    (!stale()).then_some(system)
 }

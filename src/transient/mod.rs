@@ -7,7 +7,7 @@
 //!   load of a free driveline;
 //! - [`dopri`]: Dormand–Prince 5(4) with error control and dense output;
 //! - [`run`]: settling cycle by cycle, then recording a steady run or a ramp
-//!   ([`speed`]).
+//!   ([`speed`]); [`observe`]: the run reported in chunks while it goes.
 
 pub mod dopri;
 mod error;
@@ -15,6 +15,7 @@ mod export;
 pub mod forces;
 pub mod maxwell;
 mod nnls;
+pub mod observe;
 pub mod plant;
 pub mod ros2;
 pub mod run;
@@ -24,6 +25,7 @@ pub mod stepper;
 
 pub use error::TransientError;
 pub use export::to_recording;
-pub use run::{RunKind, RunOptions, Settling, Simulation, simulate};
+pub use observe::{Chunk, Event};
+pub use run::{RunKind, RunOptions, Settling, Simulation, simulate, simulate_observed};
 pub use speed::SpeedProfile;
 pub use stepper::Method;

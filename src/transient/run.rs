@@ -5,6 +5,7 @@
 use super::TransientError;
 use super::dopri::Dopri5;
 use super::maxwell::MaxwellChain;
+use super::observe::{Event, take_chunk};
 use super::plant::{Plant, PlantLaw, Temperature};
 use super::ros2::Ros2;
 use super::speed::SpeedProfile;
@@ -118,6 +119,21 @@ pub fn simulate(
     options: RunOptions,
     progress: &mut dyn FnMut(f64) -> bool,
 ) -> Result<Simulation, TransientError> {
+    simulate_observed(model, kind, options, &mut |event| match event {
+        Event::Progress(f) => progress(f),
+        Event::Chunk(_) => true,
+    })
+}
+
+/// Runs `kind` on `model` like [`simulate`], reporting to `observer` the fraction done
+/// and, every 0.5 % of the recording and at its end, the samples recorded since the last
+/// [`Event::Chunk`]. Returning `false` from `observer` cancels.
+pub fn simulate_observed(
+    model: &Model,
+    kind: RunKind,
+    options: RunOptions,
+    observer: &mut dyn FnMut(Event) -> bool,
+) -> Result<Simulation, TransientError> {
     let (from_rpm, to_rpm, duration_s) = match kind {
         RunKind::Steady {
             speed_rpm,
@@ -199,7 +215,7 @@ pub fn simulate(
         &mut solver,
         cycle_s(from_rpm),
         settle_options,
-        progress,
+        &mut |f| observer(Event::Progress(f)),
     )?;
     let t0 = solver.t();
     if let RunKind::Ramp { .. } = kind {
@@ -211,6 +227,9 @@ pub fn simulate(
     let mut next = 0;
     let t_end = t0 + duration_s;
     let mut last_report = 0.0;
+    // Instantaneous power per element of the samples not yet reported, W.
+    let mut power = vec![Vec::new(); plant.elements.len()];
+    let mut reported = 0;
     while next < samples {
         {
             let mut rhs = |t: f64, y: &[f64], dy: &mut [f64]| {
@@ -222,14 +241,16 @@ pub fn simulate(
         while next < samples && t0 + next as f64 / options.rate_hz <= solver.t() {
             let t = t0 + next as f64 / options.rate_hz;
             solver.interpolate(t, &mut state);
-            record(&plant, &profile, t, &state, next, &mut sim);
+            record(&plant, &profile, t, &state, next, &mut sim, &mut power);
             sim.time_s[next] = next as f64 / options.rate_hz;
             next += 1;
         }
         let done = next as f64 / samples as f64;
-        if done - last_report >= 0.005 {
+        if done - last_report >= 0.005 || (next == samples && reported < samples) {
             last_report = done;
-            if !progress(0.1 + 0.9 * done) {
+            let chunk = take_chunk(&sim, reported, next, &mut power);
+            reported = next;
+            if !observer(Event::Chunk(chunk)) || !observer(Event::Progress(0.1 + 0.9 * done)) {
                 return Err(TransientError::Cancelled { time_s: solver.t() });
             }
         }
@@ -391,7 +412,8 @@ fn empty_simulation(plant: &Plant, samples: usize, settling: Settling) -> Simula
     }
 }
 
-/// Writes sample `k` of every output from state `y` at time `t`.
+/// Writes sample `k` of every output from state `y` at time `t`; appends the
+/// instantaneous power of each element to `power`.
 fn record(
     plant: &Plant,
     profile: &SpeedProfile,
@@ -399,6 +421,7 @@ fn record(
     y: &[f64],
     k: usize,
     sim: &mut Simulation,
+    power_now: &mut [Vec<f64>],
 ) {
     let n = plant.n_dof;
     let big_omega = profile.at(t).1;
@@ -413,10 +436,13 @@ fn record(
     }
     let samples = sim.time_s.len() as f64;
     let outputs = sim.torque_nm.iter_mut().zip(sim.power_loss_w.iter_mut());
-    for (e, ((_, torque), (_, power))) in plant.elements.iter().zip(outputs) {
+    for ((e, ((_, torque), (_, power))), now) in
+        plant.elements.iter().zip(outputs).zip(power_now.iter_mut())
+    {
         let state = plant.element_state(e, y, None);
         torque[k] = state.torque_ref_nm / e.ratio;
         *power += state.power_w / samples;
+        now.push(state.power_w);
     }
     let mut thermal = sim.temperature_c.iter_mut();
     for e in &plant.elements {

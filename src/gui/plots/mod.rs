@@ -7,8 +7,11 @@ mod animation;
 mod campbell;
 mod crossing;
 mod modes;
+mod recording;
 mod response;
+mod run_controls;
 mod series;
+mod stft;
 mod traces;
 
 pub use super::export::PlotData;

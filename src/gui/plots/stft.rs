@@ -1,0 +1,348 @@
+//! The run-up spectrogram: the STFT of the selected station's IAS (`torsim::signal`, built
+//! into an image on the simulation thread) as a texture with time across (linked to the
+//! time traces; the reference speed on a second axis) and frequency up, engine-order lines
+//! and the model's natural frequencies over it, a colour scale in dB re 1 rpm; below it
+//! the order tracks of that station, the recording's dashed when one is open.
+
+use super::traces::{time_link, visible_range};
+use super::{mode_color, traces};
+use crate::gui::app::TorsimApp;
+use crate::gui::spectrogram::{RANGE_DB, SpectrogramSet, colour};
+use egui::{Align2, Color32, Rect, Sense, Stroke, Ui, Vec2};
+use egui_plot::{
+    AxisHints, HLine, HoverPosition, ItemId, Legend, Line, LineStyle, Plot, PlotImage, PlotPoint,
+    Text,
+};
+use std::sync::Arc;
+use torsim::signal::{Analysis, StationAnalysis};
+
+/// Width of the colour scale beside the spectrogram, points.
+const SCALE_W: f32 = 78.0;
+
+/// The spectrogram view.
+pub fn spectrogram_ui(app: &mut TorsimApp, ui: &mut Ui) {
+    let simulated = app.results.trace_analysis.clone();
+    let measured = app.results.recording.clone();
+    let sim_set = simulated.as_ref().and_then(|a| a.spectrograms.clone());
+    let meas_set = measured.as_ref().and_then(|r| r.spectrograms.clone());
+    if meas_set.is_none() {
+        app.traces.measured_stft = false;
+    }
+    let use_measured = app.traces.measured_stft;
+    let (set, analysis, other) = match (use_measured, sim_set, meas_set.clone()) {
+        (true, _, Some(m)) => (m, measured.as_ref().map(|r| &r.analysis), None),
+        (_, Some(s), m) => (
+            s,
+            simulated.as_ref().map(|a| &a.analysis),
+            m.zip(measured.as_ref().map(|r| &r.analysis)),
+        ),
+        _ => {
+            let running = app
+                .results
+                .live
+                .as_ref()
+                .is_some_and(|l| l.layout.is_ramp());
+            ui.label(if running {
+                "The spectrogram is computed when the run-up has finished."
+            } else {
+                "Choose Run-up above: the spectrogram is of a run-up."
+            });
+            return;
+        }
+    };
+    let Some(analysis) = analysis else { return };
+    let names: Vec<String> = set.stations.iter().map(|s| s.station.clone()).collect();
+    if !names.contains(&app.traces.station) {
+        app.traces.station = if names.contains(&analysis.reference) {
+            analysis.reference.clone()
+        } else {
+            names.first().cloned().unwrap_or_default()
+        };
+    }
+    ui.horizontal(|ui| {
+        let l = ui.label("station");
+        egui::ComboBox::from_id_salt("stft-station")
+            .selected_text(app.traces.station.clone())
+            .show_ui(ui, |ui| {
+                for n in &names {
+                    ui.selectable_value(&mut app.traces.station, n.clone(), n);
+                }
+            })
+            .response
+            .labelled_by(l.id);
+        if meas_set.is_some() {
+            ui.separator();
+            ui.selectable_value(&mut app.traces.measured_stft, false, "simulated");
+            ui.selectable_value(&mut app.traces.measured_stft, true, "measured");
+        }
+        ui.weak("0.1 s Hann windows, amplitude 0-peak");
+    });
+    let Some(index) = names.iter().position(|n| *n == app.traces.station) else {
+        return;
+    };
+    let image = &set.stations[index];
+    let key = (app.results.generation, use_measured, image.station.clone());
+    let texture = match &app.traces.texture {
+        Some((k, t)) if *k == key => t.clone(),
+        _ => {
+            let t = ui.ctx().load_texture(
+                "torsim-spectrogram",
+                image.image.clone(),
+                egui::TextureOptions::LINEAR,
+            );
+            app.traces.texture = Some((key, t.clone()));
+            t
+        }
+    };
+    let height = (ui.available_height() * 0.6).max(220.0);
+    let [t0, t1] = set.time_range_s;
+    let [f0, f1] = set.freq_range_hz;
+    let speed_axis = set.clone();
+    let modes: Vec<f64> = app
+        .results
+        .campbell
+        .as_ref()
+        .map(|c| c.1.modes.iter().map(|m| m.frequency_hz).collect())
+        .unwrap_or_default();
+    let major = major_order_step(app);
+    // The view opens on the modes and the main order twice over (zoom out for the rest).
+    let top_rpm = set.speeds_rpm.iter().fold(0.0_f64, |m, v| m.max(*v));
+    let highest_mode = modes
+        .iter()
+        .copied()
+        .filter(|f| *f < f1)
+        .fold(0.0, f64::max);
+    let f_view = (1.5 * highest_mode)
+        .max(2.0 * major * top_rpm / 60.0)
+        .min(f1);
+    let set_hover = set.clone();
+    ui.horizontal(|ui| {
+        Plot::new("spectrogram")
+            .height(height)
+            .width((ui.available_width() - SCALE_W).max(200.0))
+            .y_axis_min_width(traces::Y_AXIS_W)
+            .link_axis(time_link(), [true, false])
+            .link_cursor(time_link(), [true, false])
+            .include_x(t0)
+            .include_x(t1)
+            .default_y_bounds(0.0, f_view)
+            .y_axis_label("frequency [Hz]")
+            .custom_x_axes(vec![
+                AxisHints::new_x().label("time [s]"),
+                AxisHints::new_x()
+                    .label("reference speed [rpm]")
+                    .formatter(move |mark, _| format!("{:.0}", speed_axis.speed_at(mark.value))),
+            ])
+            .label_formatter(move |pos| {
+                let p = match pos {
+                    HoverPosition::NearDataPoint { position, .. }
+                    | HoverPosition::Elsewhere { position } => *position,
+                };
+                let n = set_hover.speed_at(p.x);
+                let level = set_hover.stations[index]
+                    .db_at(&set_hover, p.x, p.y)
+                    .map_or(String::new(), |db| format!("\n{db:.1} dB re 1 rpm"));
+                Some(format!(
+                    "t = {:.2} s ({n:.0} rpm)\nf = {:.1} Hz = order {:.2}{level}",
+                    p.x,
+                    p.y,
+                    p.y * 60.0 / n.max(1e-9)
+                ))
+            })
+            .show(ui, |plot| {
+                plot.image(PlotImage::new(
+                    "STFT",
+                    texture.id(),
+                    PlotPoint::new(0.5 * (t0 + t1), 0.5 * (f0 + f1)),
+                    Vec2::new((t1 - t0) as f32, (f1 - f0) as f32),
+                ));
+                for (i, &f) in modes.iter().enumerate().filter(|(_, f)| **f < f1) {
+                    plot.hline(
+                        HLine::new(format!("mode {}", i + 1), f)
+                            .color(Color32::from_white_alpha(110))
+                            .style(LineStyle::dashed_loose()),
+                    );
+                    plot.text(
+                        Text::new(
+                            "",
+                            PlotPoint::new(t0, f),
+                            format!(" mode {} {f:.1} Hz", i + 1),
+                        )
+                        .color(Color32::WHITE)
+                        .anchor(Align2::LEFT_BOTTOM),
+                    );
+                }
+                for &q in set.orders.iter().filter(|q| q.fract() == 0.0) {
+                    let line: Vec<[f64; 2]> = set
+                        .times_s
+                        .iter()
+                        .zip(&set.speeds_rpm)
+                        .map(|(&t, &n)| [t, q * n / 60.0])
+                        .filter(|p| p[1] <= f1)
+                        .collect();
+                    let Some(&[t_end, f_end]) = line.last() else {
+                        continue;
+                    };
+                    let strong = (q / major - (q / major).round()).abs() < 1e-9;
+                    let alpha = if strong { 110 } else { 40 };
+                    plot.line(
+                        Line::new("", line)
+                            .color(Color32::from_white_alpha(alpha))
+                            .width(1.0)
+                            .style(LineStyle::dashed_loose())
+                            .allow_hover(false),
+                    );
+                    plot.text(
+                        Text::new("", PlotPoint::new(t_end, f_end), format!("{q}"))
+                            .color(Color32::WHITE)
+                            .anchor(Align2::RIGHT_BOTTOM),
+                    );
+                }
+            });
+        colour_scale_ui(ui, image.db_range, height);
+    });
+    let station = find(analysis, &app.traces.station);
+    let other = other.and_then(|(set, a)| Some((set, find(a, &app.traces.station)?)));
+    let key = (app.results.generation, app.traces.station.clone());
+    let fresh = app.traces.tracks_drawn.as_ref() != Some(&key);
+    order_tracks_ui(ui, &set, station, other, major, fresh);
+    app.traces.tracks_drawn = Some(key);
+}
+
+/// Orders at multiples of this step are the engine's main ones (half the cylinder count
+/// for a 4-stroke, the count for a 2-stroke; 1 without an engine).
+fn major_order_step(app: &TorsimApp) -> f64 {
+    app.model.engine.as_ref().map_or(1.0, |e| {
+        f64::from(e.cylinders) * if e.strokes == 2 { 1.0 } else { 0.5 }
+    })
+}
+
+/// A station or relative speed of an analysis by name.
+fn find<'a>(a: &'a Analysis, name: &str) -> Option<&'a StationAnalysis> {
+    a.stations.iter().chain(&a.n_rel).find(|s| s.name == name)
+}
+
+/// The colour scale: the map from bottom to top with labels every 10 dB.
+fn colour_scale_ui(ui: &mut Ui, [bottom, top]: [f64; 2], height: f32) {
+    let (rect, _) = ui.allocate_exact_size(Vec2::new(SCALE_W, height), Sense::hover());
+    let painter = ui.painter_at(rect);
+    let bar = Rect::from_min_max(
+        rect.min + Vec2::new(6.0, 22.0),
+        rect.min + Vec2::new(22.0, height - 30.0),
+    );
+    let steps = 64;
+    for i in 0..steps {
+        let u0 = i as f32 / steps as f32;
+        let u1 = (i + 1) as f32 / steps as f32;
+        let r = Rect::from_x_y_ranges(
+            bar.x_range(),
+            bar.bottom() - u1 * bar.height()..=bar.bottom() - u0 * bar.height(),
+        );
+        painter.rect_filled(r, 0.0, colour(f64::from(u0 + 0.5 / steps as f32)));
+    }
+    let text = ui.visuals().text_color();
+    let font = egui::TextStyle::Small.resolve(ui.style());
+    painter.text(
+        rect.min + Vec2::new(2.0, 2.0),
+        Align2::LEFT_TOP,
+        "dB re 1 rpm",
+        font.clone(),
+        text,
+    );
+    let mut db = top;
+    while db >= bottom - 1e-9 {
+        let y = bar.bottom() - ((db - bottom) / RANGE_DB) as f32 * bar.height();
+        painter.line_segment(
+            [egui::pos2(bar.right(), y), egui::pos2(bar.right() + 4.0, y)],
+            Stroke::new(1.0, text),
+        );
+        painter.text(
+            egui::pos2(bar.right() + 6.0, y),
+            Align2::LEFT_CENTER,
+            format!("{db:.0}"),
+            font.clone(),
+            text,
+        );
+        db -= 10.0;
+    }
+}
+
+/// The order tracks of a station over the run-up (rpm 0-peak), the recording's dashed;
+/// orders other than the main ones start hidden (`fresh`: first drawn for this run).
+fn order_tracks_ui(
+    ui: &mut Ui,
+    set: &Arc<SpectrogramSet>,
+    station: Option<&StationAnalysis>,
+    other: Option<(Arc<SpectrogramSet>, &StationAnalysis)>,
+    major: f64,
+    fresh: bool,
+) {
+    let Some(tracks) = station.and_then(|s| s.stft.as_ref()) else {
+        return;
+    };
+    let hidden: Vec<ItemId> = set
+        .orders
+        .iter()
+        .filter(|q| (*q / major - (*q / major).round()).abs() > 1e-9)
+        .map(|q| ItemId::new(format!("order {q}")))
+        .collect();
+    let speed = set.clone();
+    let speed_axis = set.clone();
+    let mut legend = Legend::default().follow_insertion_order(true);
+    if fresh {
+        legend = legend.hidden_items(hidden);
+    }
+    let label = if other.is_some() {
+        "order amplitude [rpm] (0-peak; dashed: measured)"
+    } else {
+        "order amplitude [rpm] (0-peak)"
+    };
+    Plot::new("order-tracks")
+        .legend(legend)
+        .width((ui.available_width() - SCALE_W).max(200.0))
+        .y_axis_min_width(traces::Y_AXIS_W)
+        .link_axis(time_link(), [true, false])
+        .link_cursor(time_link(), [true, false])
+        .custom_x_axes(vec![
+            AxisHints::new_x().label("time [s]"),
+            AxisHints::new_x()
+                .label("reference speed [rpm]")
+                .formatter(move |mark, _| format!("{:.0}", speed_axis.speed_at(mark.value))),
+        ])
+        .y_axis_label(label)
+        .label_formatter(move |pos| {
+            let (name, p) = match pos {
+                HoverPosition::NearDataPoint {
+                    plot_name,
+                    position,
+                    ..
+                } => (*plot_name, *position),
+                HoverPosition::Elsewhere { position } => ("", *position),
+            };
+            Some(format!(
+                "{name}\nt = {:.2} s ({:.0} rpm)\n{:.3} rpm",
+                p.x,
+                speed.speed_at(p.x),
+                p.y
+            ))
+        })
+        .show(ui, |plot| {
+            let range = visible_range(plot);
+            let tracked = set.orders.iter().zip(&tracks.order_tracks_rpm).enumerate();
+            for (k, (q, track)) in tracked.filter(|(_, (q, _))| q.fract() == 0.0) {
+                let p = traces::points(&set.times_s, track, 0.0, &|_| 0.0, range, 2000);
+                plot.line(Line::new(format!("order {q}"), p).color(mode_color(k)));
+                let Some((o_set, o)) = &other else {
+                    continue;
+                };
+                if let Some(track) = o.stft.as_ref().and_then(|s| s.order_tracks_rpm.get(k)) {
+                    let p = traces::points(&o_set.times_s, track, 0.0, &|_| 0.0, range, 2000);
+                    plot.line(
+                        Line::new(format!("order {q}"), p)
+                            .color(mode_color(k))
+                            .style(LineStyle::dashed_dense()),
+                    );
+                }
+            }
+        });
+}

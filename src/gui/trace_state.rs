@@ -1,0 +1,150 @@
+//! What the traces tab asks for and how it shows it: steady run or run-up (defaults from
+//! the model's speed range: the whole range in 60 s), the open recording, the view
+//! (traces, spectrogram, orders), the selected station; and the results of the time run
+//! taken from the worker's messages.
+
+use super::app::TorsimApp;
+use super::trace_data::{LiveTrace, TraceSpec};
+use super::worker::SimResult;
+use crossbeam_channel::Receiver;
+use std::path::PathBuf;
+use torsim::model::Model;
+
+/// Duration of the default run-up over the model's speed range, s.
+pub const DEFAULT_RUN_UP_S: f64 = 60.0;
+
+/// Steady run or run-up.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum TraceMode {
+    /// A steady run at `app.trace_speed_rpm`.
+    Steady,
+    /// A linear run-up.
+    RunUp,
+    /// The regime of the open recording.
+    Recording,
+}
+
+/// The view of the traces tab.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum TraceView {
+    /// Time traces, one plot per quantity, x axes linked.
+    Traces,
+    /// The STFT of a run-up with order lines, and order tracks.
+    Spectrogram,
+    /// Order amplitudes per station, measured against simulated.
+    Orders,
+}
+
+/// The traces tab's state.
+pub struct TraceState {
+    /// Steady run, run-up, or the recording's regime.
+    pub mode: TraceMode,
+    /// Recorded duration of a steady run, s (default 2).
+    pub steady_duration_s: f64,
+    /// Run-up start, rpm.
+    pub from_rpm: f64,
+    /// Run-up end, rpm.
+    pub to_rpm: f64,
+    /// Run-up rate, rpm/s.
+    pub rate_rpm_per_s: f64,
+    /// The model speed range the run-up defaults were taken from.
+    defaults_for: Option<[f64; 2]>,
+    /// The open recording (CSV path).
+    pub recording: Option<PathBuf>,
+    /// A file dialog waiting for the user.
+    pub dialog: Option<Receiver<Option<PathBuf>>>,
+    /// What the tab shows.
+    pub view: TraceView,
+    /// Station (node, or relative speed) of the spectrogram.
+    pub station: String,
+    /// Show the recording's spectrogram instead of the simulation's.
+    pub measured_stft: bool,
+    /// The order whose track is drawn under the spectrogram.
+    pub track_order: f64,
+    /// The spectrogram texture and what it shows: (generation, measured, station).
+    pub texture: Option<((u64, bool, String), egui::TextureHandle)>,
+    /// Show IAS about each station's mean speed (default) rather than absolute.
+    pub ias_about_mean: bool,
+    /// Generation of the run last drawn (a new run resets zoom and legend).
+    pub drawn: Option<u64>,
+    /// Generation and station of the order tracks last drawn.
+    pub tracks_drawn: Option<(u64, String)>,
+}
+
+impl Default for TraceState {
+    fn default() -> Self {
+        Self {
+            mode: TraceMode::Steady,
+            steady_duration_s: 2.0,
+            from_rpm: 1000.0,
+            to_rpm: 2000.0,
+            rate_rpm_per_s: 1000.0 / DEFAULT_RUN_UP_S,
+            defaults_for: None,
+            recording: None,
+            dialog: None,
+            view: TraceView::Traces,
+            station: String::new(),
+            measured_stft: false,
+            track_order: 0.0,
+            texture: None,
+            ias_about_mean: true,
+            drawn: None,
+            tracks_drawn: None,
+        }
+    }
+}
+
+impl TraceState {
+    /// What to run for `model`; the run-up defaults follow the model's speed range when
+    /// it changes (another model, or the range edited).
+    pub fn spec(&mut self, model: &Model, steady_rpm: f64) -> TraceSpec {
+        let range = model.operation.speed_range_rpm;
+        if range != self.defaults_for {
+            self.defaults_for = range;
+            let [from, to] = range.unwrap_or([1000.0, 2000.0]);
+            self.from_rpm = from;
+            self.to_rpm = to;
+            self.rate_rpm_per_s = (to - from).abs() / DEFAULT_RUN_UP_S;
+        }
+        match self.mode {
+            TraceMode::Steady => TraceSpec::Steady {
+                speed_rpm: steady_rpm,
+                duration_s: self.steady_duration_s,
+            },
+            TraceMode::RunUp => TraceSpec::RunUp {
+                from_rpm: self.from_rpm,
+                to_rpm: self.to_rpm,
+                rate_rpm_per_s: self.rate_rpm_per_s,
+            },
+            TraceMode::Recording => TraceSpec::MatchRecording,
+        }
+    }
+}
+
+/// Takes a time-run message of the current generation (others are dropped).
+pub fn receive(app: &mut TorsimApp, message: SimResult) {
+    let current = app.results.generation;
+    let r = &mut app.results;
+    match message {
+        SimResult::TraceRunning(g, label) if g == current => {
+            r.trace_label = label;
+            r.trace_progress = 0.0;
+        }
+        SimResult::TraceStarted(g, layout) if g == current => {
+            r.live = Some(LiveTrace::new(g, layout));
+            r.trace_analysis = None;
+        }
+        SimResult::TraceChunk(g, chunk) if g == current => {
+            if let Some(live) = r.live.as_mut().filter(|l| l.generation == g) {
+                live.append(&chunk);
+            }
+        }
+        SimResult::TraceAnalysis(g, a) if g == current => r.trace_analysis = Some(a),
+        SimResult::Recording(g, view) if g == current => {
+            app.stations = view.stations();
+            r.recording = Some(view);
+        }
+        SimResult::Cancelled(g) => r.trace_cancelled = Some(g),
+        _ => {}
+    }
+}
