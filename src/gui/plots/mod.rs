@@ -7,6 +7,7 @@ mod animation;
 mod campbell;
 mod crossing;
 mod modes;
+mod quantity;
 mod response;
 mod series;
 mod traces;
@@ -17,9 +18,9 @@ pub use campbell::CAMPBELL_PLOT_ID;
 pub use campbell::crossing_at;
 #[cfg(test)]
 pub use crossing::crossing_response;
-pub use response::Quantity;
+pub use quantity::Quantity;
 #[cfg(test)]
-pub use response::matters;
+pub use quantity::matters;
 
 use super::app::{Tab, TorsimApp};
 use egui::{Color32, Ui};
@@ -84,7 +85,7 @@ impl Default for PlotState {
             station: None,
             connection: None,
             playing: true,
-            amplitude_deg: 25.0,
+            amplitude_deg: 40.0,
             phase_cycles: 0.0,
         }
     }
