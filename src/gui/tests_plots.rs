@@ -250,3 +250,34 @@ fn response_quantity_switches_to_the_library_torque() {
         assert!((p[1] - total).abs() <= 1e-12 * total);
     }
 }
+
+/// The mode-shape tab names the element holding most of mode 1's strain energy — the
+/// coupling (seed 000: the 26 Hz mode is the coupling mode) — with the library's share,
+/// and the animation pauses.
+#[test]
+fn mode_tab_shows_the_strain_energy_and_pauses() {
+    let mut h = harness();
+    step_until(&mut h, ready);
+    h.get_by_label("Mode shapes").click();
+    h.run_steps(2);
+    let c = h.state().results.campbell.clone().expect("campbell");
+    let (system, diagram, _) = &*c;
+    let shares = &diagram.strain_energy_share[0];
+    let (e, share) = shares
+        .iter()
+        .enumerate()
+        .max_by(|a, b| a.1.total_cmp(b.1))
+        .expect("elements");
+    let name = &system.connection_names[system.elements[e].connection];
+    assert_eq!(name, "coupling");
+    assert!(*share > 0.9, "{share}");
+    h.get_by_label_contains(&format!(
+        "strain energy mostly in coupling ({:.0} %)",
+        100.0 * share
+    ));
+    assert!(h.state().plots.playing);
+    h.get_by_label("Pause").click();
+    h.run_steps(2);
+    assert!(!h.state().plots.playing);
+    h.get_by_label("Play");
+}

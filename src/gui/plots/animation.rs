@@ -80,7 +80,7 @@ pub fn animation_ui(
             .and_then(|j| j.get(k))
             .copied()
             .unwrap_or(j_max);
-        max_r * ((j / j_max).powf(0.25) as f32).clamp(0.3, 1.0)
+        max_r * ((j / j_max).powf(0.25) as f32).clamp(0.45, 1.0)
     };
     let y = rect.center().y;
     let centre = |pos: usize| pos2(rect.left() + pitch * (pos as f32 + 0.5), y);
@@ -159,6 +159,20 @@ pub fn animation_ui(
         let c = centre(position_of_node[k]);
         let r = radius(k);
         painter.circle(c, r, color.gamma_multiply(0.25), Stroke::new(1.5, color));
+        // The swing's envelope, so that a still picture shows the shape too.
+        let reach = (f64::from(state.amplitude_deg).to_radians() * shape[k].abs()) as f32;
+        if reach > 0.05 {
+            let arc = (0..=16).map(|i| {
+                let t = -reach + 2.0 * reach * i as f32 / 16.0;
+                c + r * vec2(t.sin(), -t.cos())
+            });
+            let wedge: Vec<Pos2> = std::iter::once(c).chain(arc).collect();
+            painter.add(egui::Shape::convex_polygon(
+                wedge,
+                text.gamma_multiply(0.18),
+                Stroke::NONE,
+            ));
+        }
         painter.line_segment([c, c - vec2(0.0, r)], Stroke::new(1.0, weak));
         let angle = (swing * shape[k]) as f32;
         let tip = c + r * vec2(angle.sin(), -angle.cos());

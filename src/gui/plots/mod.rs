@@ -7,6 +7,7 @@ mod animation;
 mod campbell;
 mod crossing;
 mod modes;
+mod quantity;
 mod recording;
 mod response;
 mod run_controls;
@@ -20,9 +21,9 @@ pub use campbell::CAMPBELL_PLOT_ID;
 pub use campbell::crossing_at;
 #[cfg(test)]
 pub use crossing::crossing_response;
-pub use response::Quantity;
+pub use quantity::Quantity;
 #[cfg(test)]
-pub use response::matters;
+pub use quantity::matters;
 
 use super::app::{Tab, TorsimApp};
 use egui::{Color32, Ui};
@@ -87,7 +88,7 @@ impl Default for PlotState {
             station: None,
             connection: None,
             playing: true,
-            amplitude_deg: 25.0,
+            amplitude_deg: 40.0,
             phase_cycles: 0.0,
         }
     }
