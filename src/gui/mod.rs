@@ -6,10 +6,15 @@ pub mod app;
 pub mod editor;
 pub mod files;
 pub mod plots;
+pub mod schematic;
 pub mod worker;
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_edit;
+#[cfg(test)]
+mod tests_edit_cases;
 
 use crate::cli::error::CliError;
 use std::path::PathBuf;
