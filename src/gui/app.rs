@@ -3,6 +3,7 @@
 //! unsaved and sends a new request to the simulation thread.
 
 use super::recording_job::RecordingView;
+use super::schematic::{self, Selection};
 use super::trace_data::LiveTrace;
 use super::trace_job::RunAnalysis;
 use super::trace_state::{self, TraceState};
@@ -11,7 +12,7 @@ use super::{editor, export, files, plots, recordings};
 use std::path::PathBuf;
 use std::sync::Arc;
 use torsim::modal::{Campbell, DampedMode};
-use torsim::model::{Model, validate};
+use torsim::model::{Model, ModelError, validate};
 use torsim::physics::System;
 use torsim::response::Response;
 use torsim::transient::Simulation;
@@ -71,6 +72,15 @@ pub struct TorsimApp {
     pub redo: Vec<Model>,
     /// The model's validation error, if any (results are not requested then).
     pub invalid: Option<String>,
+    /// The same error with its key path, which the editor marks.
+    pub invalid_error: Option<ModelError>,
+    /// The element selected in the schematic or the editor.
+    pub selected: Option<Selection>,
+    /// Nodes with a measurement station (from loaded recordings), marked in the schematic.
+    pub stations: Vec<String>,
+    /// The model before the edit gesture in progress (a drag, or typing in a field that
+    /// still has focus): the whole gesture becomes one undo step when it ends.
+    gesture_start: Option<Model>,
     /// Results.
     pub results: Results,
     /// Central tab.
@@ -85,8 +95,6 @@ pub struct TorsimApp {
     pub trace_speed_rpm: f64,
     /// The traces tab: run-up settings, the open recording, the view.
     pub traces: TraceState,
-    /// Measured stations (nodes) of the open recording, marked in the schematic.
-    pub stations: Vec<String>,
     /// A status line (file saved, errors of file dialogs).
     pub status: String,
     /// Pending file dialog results.
@@ -113,6 +121,10 @@ impl TorsimApp {
             undo: Vec::new(),
             redo: Vec::new(),
             invalid: None,
+            invalid_error: None,
+            selected: None,
+            stations: Vec::new(),
+            gesture_start: None,
             results: Results::default(),
             tab: Tab::Campbell,
             selected_mode: 0,
@@ -120,7 +132,6 @@ impl TorsimApp {
             exports: export::Exports::default(),
             trace_speed_rpm,
             traces: TraceState::default(),
-            stations: Vec::new(),
             status: String::new(),
             files: files::FileDialogs::default(),
             close_prompt: false,
@@ -136,6 +147,7 @@ impl TorsimApp {
         match validate(&self.model) {
             Ok(()) => {
                 self.invalid = None;
+                self.invalid_error = None;
                 self.results.generation += 1;
                 self.results.errors.clear();
                 let spec = self.traces.spec(&self.model, self.trace_speed_rpm);
@@ -148,7 +160,10 @@ impl TorsimApp {
                     self.stations.clone(),
                 );
             }
-            Err(e) => self.invalid = Some(e.to_string()),
+            Err(e) => {
+                self.invalid = Some(e.to_string());
+                self.invalid_error = Some(e);
+            }
         }
     }
 
@@ -157,19 +172,41 @@ impl TorsimApp {
         self.worker.cancel(self.results.generation);
     }
 
-    /// Records an edit: `before` goes on the undo stack, the model is unsaved, results are
-    /// requested again.
+    /// Records a finished edit: `before` (or the start of the gesture it ends) goes on the
+    /// undo stack, the model is unsaved, results are requested again.
     pub fn commit(&mut self, before: Model) {
+        self.commit_live(before, false);
+    }
+
+    /// Records an edit that may be part of a gesture: results are requested at once (so
+    /// they follow a drag live), but while `in_progress` the undo step stays open, and the
+    /// whole gesture becomes one step when it ends.
+    pub fn commit_live(&mut self, before: Model, in_progress: bool) {
         if before != self.model {
-            self.undo.push(before);
+            if self.gesture_start.is_none() {
+                self.gesture_start = Some(before);
+            }
             self.redo.clear();
             self.dirty = true;
             self.request();
+        }
+        if !in_progress {
+            self.end_gesture();
+        }
+    }
+
+    /// Closes the gesture in progress, if any: one undo step when it changed the model.
+    fn end_gesture(&mut self) {
+        if let Some(start) = self.gesture_start.take()
+            && start != self.model
+        {
+            self.undo.push(start);
         }
     }
 
     /// Undoes the last edit.
     pub fn undo(&mut self) {
+        self.end_gesture();
         if let Some(previous) = self.undo.pop() {
             self.redo.push(std::mem::replace(&mut self.model, previous));
             self.dirty = true;
@@ -179,6 +216,7 @@ impl TorsimApp {
 
     /// Redoes the last undone edit.
     pub fn redo(&mut self) {
+        self.end_gesture();
         if let Some(next) = self.redo.pop() {
             self.undo.push(std::mem::replace(&mut self.model, next));
             self.dirty = true;
@@ -321,14 +359,14 @@ impl eframe::App for TorsimApp {
                 }
             });
         });
+        let strip = schematic::strip_height(&self.model, 0.4 * ui.available_height());
+        egui::Panel::top("schematic")
+            .exact_size(strip)
+            .show(ui, |ui| schematic::schematic_ui(self, ui));
         egui::Panel::left("driveline")
             .resizable(true)
             .default_size(360.0)
-            .show(ui, |ui| {
-                let before = self.model.clone();
-                editor::driveline_ui(&mut self.model, ui);
-                self.commit(before);
-            });
+            .show(ui, |ui| editor::driveline_ui(self, ui));
         egui::CentralPanel::default().show(ui, |ui| plots::central_ui(self, ui));
     }
 }

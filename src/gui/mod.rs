@@ -10,6 +10,7 @@ pub mod files;
 pub mod plots;
 pub mod recording_job;
 pub mod recordings;
+pub mod schematic;
 pub mod spectrogram;
 pub mod trace_data;
 pub mod trace_job;
@@ -19,6 +20,10 @@ pub mod worker;
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_edit;
+#[cfg(test)]
+mod tests_edit_cases;
 #[cfg(test)]
 mod tests_plots;
 #[cfg(test)]

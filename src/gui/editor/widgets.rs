@@ -1,0 +1,176 @@
+//! The editor's widgets: a number with its unit (drag, or click and type), a whole
+//! number, a node picker, a name that is applied when its field is left. Each one knows
+//! the key path of what it edits (as in the model file, e.g. `connection[2].stiffness`):
+//! when the model's validation error is at that key the widget is framed in red and says
+//! why on hover and under its row. Each reports whether an edit is still in progress (a
+//! drag, or a field with keyboard focus), so that one gesture becomes one undo step.
+
+use super::fields::{EditCtx, error_color, format_value};
+use egui::{DragValue, Response, Stroke, TextEdit, Ui};
+
+/// Adds a widget, framed in red when the error is at `key`; marks it for the error.
+fn marked(
+    ui: &mut Ui,
+    cx: &mut EditCtx,
+    key: &str,
+    add: impl FnOnce(&mut Ui) -> Response,
+) -> Response {
+    let message = cx.error_at(key);
+    let response = ui
+        .scope(|ui| {
+            if message.is_some() {
+                let red = error_color(ui);
+                let tint = red.gamma_multiply(0.25);
+                let w = &mut ui.visuals_mut().widgets;
+                for s in [&mut w.inactive, &mut w.hovered, &mut w.active, &mut w.open] {
+                    s.weak_bg_fill = tint;
+                    s.bg_fill = tint;
+                    s.bg_stroke = Stroke::new(1.5, red);
+                }
+                ui.visuals_mut().extreme_bg_color = tint;
+                ui.visuals_mut().selection.stroke = Stroke::new(1.5, red);
+            }
+            add(ui)
+        })
+        .inner;
+    cx.track(&response);
+    match message {
+        Some(m) => {
+            cx.shown_at(key);
+            cx.row_message = Some(m.clone());
+            response.on_hover_text(m)
+        }
+        None => response,
+    }
+}
+
+/// Gives a widget the accessible name `access` (what screen readers and tests use).
+fn name_it(ui: &Ui, r: &Response, access: &str) {
+    ui.ctx()
+        .accesskit_node_builder(r.id, |node| node.set_label(access.to_string()));
+}
+
+/// A value with its unit: drag (the speed follows the value's size, at least
+/// `typical`·0.4 % per point) or click and type. Not clamped: validation says what is
+/// wrong instead.
+pub fn number(
+    ui: &mut Ui,
+    cx: &mut EditCtx,
+    key: &str,
+    access: &str,
+    value: &mut f64,
+    unit: &str,
+    typical: f64,
+) -> Response {
+    marked(ui, cx, key, |ui| {
+        let editing = ui.memory(|m| m.has_focus(ui.next_auto_id()));
+        let speed = value.abs().max(typical.abs()).max(1e-9) * 0.004;
+        let mut drag = DragValue::new(value)
+            .speed(speed)
+            .custom_formatter(move |x, _| {
+                // While typing, the exact value, so that leaving the field changes nothing.
+                if editing {
+                    format!("{x}")
+                } else {
+                    format_value(x)
+                }
+            });
+        if !unit.is_empty() {
+            drag = drag.suffix(format!(" {unit}"));
+        }
+        let r = ui.add(drag);
+        name_it(ui, &r, access);
+        r
+    })
+}
+
+/// A whole number (counts, mode numbers).
+pub fn count(ui: &mut Ui, cx: &mut EditCtx, key: &str, access: &str, value: &mut u32) -> Response {
+    marked(ui, cx, key, |ui| {
+        let r = ui.add(DragValue::new(value).speed(0.05));
+        name_it(ui, &r, access);
+        r
+    })
+}
+
+/// A node picker (with `ground` when `ground` is true).
+pub fn node_combo(
+    ui: &mut Ui,
+    cx: &mut EditCtx,
+    key: &str,
+    access: &str,
+    value: &mut String,
+    ground: bool,
+) -> Response {
+    let nodes = cx.nodes.clone();
+    let before = value.clone();
+    let mut r = marked(ui, cx, key, |ui| {
+        let r = egui::ComboBox::from_id_salt(("node", key))
+            .selected_text(value.as_str())
+            .show_ui(ui, |ui| {
+                let ground_name = torsim::model::GROUND.to_string();
+                for name in nodes.iter().chain(ground.then_some(&ground_name)) {
+                    ui.selectable_value(value, name.clone(), name);
+                }
+            })
+            .response;
+        name_it(ui, &r, access);
+        r
+    });
+    if *value != before {
+        r.mark_changed();
+    }
+    r
+}
+
+/// A name applied when the field is left (Enter or a click elsewhere; Escape cancels):
+/// gives the new name when it differs and `check` accepts it, else shows `check`'s
+/// reason under the row.
+pub fn name_field(
+    ui: &mut Ui,
+    cx: &mut EditCtx,
+    key: &str,
+    access: &str,
+    current: &str,
+    width: f32,
+    check: impl Fn(&str) -> Result<(), String>,
+) -> (Response, Option<String>) {
+    let id = egui::Id::unique(("torsim.name", key));
+    let rejected = id.with("rejected");
+    let focused = ui.memory(|m| m.has_focus(id));
+    let mut text = match focused {
+        true => ui
+            .data(|d| d.get_temp::<String>(id))
+            .unwrap_or_else(|| current.to_string()),
+        false => current.to_string(),
+    };
+    let r = marked(ui, cx, key, |ui| {
+        let edit = TextEdit::singleline(&mut text).id(id).desired_width(width);
+        let r = ui.add_sized([width, ui.spacing().interact_size.y], edit);
+        name_it(ui, &r, access);
+        r
+    });
+    if r.has_focus() {
+        ui.data_mut(|d| d.insert_temp(id, text.clone()));
+    }
+    if r.changed() {
+        ui.data_mut(|d| d.remove::<String>(rejected));
+    }
+    let mut renamed = None;
+    if r.lost_focus() {
+        ui.data_mut(|d| d.remove::<String>(id));
+        let escape = ui.input(|i| i.key_pressed(egui::Key::Escape));
+        if !escape && text != current {
+            match check(&text) {
+                Ok(()) => renamed = Some(text),
+                Err(why) => {
+                    ui.data_mut(|d| d.insert_temp(rejected, why));
+                }
+            }
+        }
+    }
+    if let Some(why) = ui.data(|d| d.get_temp::<String>(rejected)) {
+        cx.row_message = Some(format!("not renamed: {why}"));
+    }
+    (r, renamed)
+}
