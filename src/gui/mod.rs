@@ -15,6 +15,8 @@ mod tests;
 mod tests_edit;
 #[cfg(test)]
 mod tests_edit_cases;
+#[cfg(test)]
+mod tests_edit_structure;
 
 use crate::cli::error::CliError;
 use std::path::PathBuf;
