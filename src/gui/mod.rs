@@ -28,6 +28,8 @@ mod tests_edit_cases;
 mod tests_plots;
 #[cfg(test)]
 mod tests_traces;
+#[cfg(test)]
+mod tests_edit_structure;
 
 use crate::cli::error::CliError;
 use std::path::PathBuf;

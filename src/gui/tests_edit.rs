@@ -11,13 +11,13 @@ use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 use torsim::model::{ConnectionKind, Model, parse_model, presets, validate};
 
-fn preset(name: &str) -> Model {
+pub(super) fn preset(name: &str) -> Model {
     let p = presets::preset(name).expect("preset");
     parse_model(p.text, name).expect("model")
 }
 
 /// The real app on `model`, tall enough that the driveline panel needs no scrolling.
-fn harness(model: Model) -> Harness<'static, TorsimApp> {
+pub(super) fn harness(model: Model) -> Harness<'static, TorsimApp> {
     Harness::builder()
         .with_size([1280.0, 2600.0])
         .build_eframe(move |cc| {
@@ -43,7 +43,7 @@ fn click_at(h: &mut Harness<'static, TorsimApp>, pos: Pos2) {
 }
 
 /// The keys at which the editor showed the validation error in the last frame.
-fn shown(h: &Harness<'static, TorsimApp>) -> Vec<String> {
+pub(super) fn shown(h: &Harness<'static, TorsimApp>) -> Vec<String> {
     h.ctx
         .data(|d| d.get_temp::<Vec<String>>(super::editor::shown_id()))
         .unwrap_or_default()
@@ -92,7 +92,7 @@ fn clicking_the_schematic_selects_and_opens_the_element() {
 }
 
 /// Types `text` into the name field labelled `label`, replacing its content, and leaves it.
-fn rename(h: &mut Harness<'static, TorsimApp>, label: &str, text: &str) {
+pub(super) fn rename(h: &mut Harness<'static, TorsimApp>, label: &str, text: &str) {
     h.get_by_label(label).click();
     h.step();
     h.key_press_modifiers(Modifiers::COMMAND, Key::A);

@@ -61,13 +61,17 @@ pub fn add_ui(ui: &mut Ui, cx: &mut EditCtx, model: &mut Model) {
     }
     ui.horizontal(|ui| {
         ui.label("Add a");
-        egui::ComboBox::from_id_salt("add kind")
+        let r = egui::ComboBox::from_id_salt("add kind")
             .selected_text(KINDS[form.kind])
             .show_ui(ui, |ui| {
                 for (k, kind) in KINDS.iter().enumerate() {
                     ui.selectable_value(&mut form.kind, k, *kind);
                 }
-            });
+            })
+            .response;
+        ui.ctx().accesskit_node_builder(r.id, |node| {
+            node.set_label("new connection kind");
+        });
     });
     ui.horizontal(|ui| {
         ui.label("from");

@@ -15,6 +15,12 @@ pub fn expect_ui(ui: &mut Ui, cx: &mut EditCtx, model: &mut Model) {
         .num_columns(4)
         .spacing([6.0, 3.0])
         .show(ui, |ui| {
+            if !ex.mode_hz.is_empty() || !ex.critical_rpm.is_empty() {
+                for title in ["", "from", "to", ""] {
+                    ui.label(title);
+                }
+                ui.end_row();
+            }
             for (i, m) in ex.mode_hz.iter_mut().enumerate() {
                 let key = format!("expect.mode_hz[{i}]");
                 ui.horizontal(|ui| {
@@ -121,30 +127,9 @@ pub fn expect_ui(ui: &mut Ui, cx: &mut EditCtx, model: &mut Model) {
     });
     ui.label("No resonance in the operating range for orders");
     let key = "expect.no_resonance_in_operating_range";
+    let width = ui.available_width() - 8.0;
     let list = &mut ex.no_resonance_in_operating_range;
-    let mut remove = None;
-    ui.horizontal_wrapped(|ui| {
-        for (i, q) in list.iter_mut().enumerate() {
-            widgets::number(
-                ui,
-                cx,
-                &format!("{key}[{i}]"),
-                &format!("no resonance order {}", i + 1),
-                q,
-                "",
-                0.5,
-            );
-            if ui.small_button("×").clicked() {
-                remove = Some(i);
-            }
-        }
-        if ui.small_button("+ order").clicked() {
-            list.push(list.last().map_or(1.0, |q| q + 1.0));
-        }
-    });
+    widgets::list_field(ui, cx, key, "no resonance orders", list, width)
+        .on_hover_text("orders separated by commas, applied when you leave the field");
     fields::note(ui, cx);
-    fields::message_at(ui, cx, key);
-    if let Some(i) = remove {
-        list.remove(i);
-    }
 }

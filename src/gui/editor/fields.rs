@@ -176,10 +176,10 @@ pub fn summary(ui: &mut Ui, cx: &mut EditCtx, prefix: &str, text: impl Into<Stri
                 cx.shown_at(&key);
             }
             cx.row_message = Some(m.clone());
-            let r = ui.label(RichText::new(text.into()).color(error_color(ui)));
-            r.on_hover_text(m)
+            let red = RichText::new(text.into()).color(error_color(ui));
+            ui.add(egui::Label::new(red).wrap()).on_hover_text(m)
         }
-        None => ui.label(text.into()),
+        None => ui.add(egui::Label::new(text.into()).wrap()),
     }
 }
 

@@ -102,6 +102,9 @@ pub fn inertias_ui(ui: &mut Ui, cx: &mut EditCtx, model: &mut Model, stations: &
                 let x = ui
                     .small_button("×")
                     .on_hover_text(format!("remove {name} and its {attached} connection(s)"));
+                ui.ctx().accesskit_node_builder(x.id, |node| {
+                    node.set_label(format!("remove {name}"));
+                });
                 if x.clicked() {
                     remove = Some(i);
                 }

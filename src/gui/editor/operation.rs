@@ -80,37 +80,13 @@ fn orders_ui(ui: &mut Ui, cx: &mut EditCtx, orders: &mut Option<Vec<f64>>, strok
         ));
         return;
     };
-    let mut remove = None;
-    ui.horizontal_wrapped(|ui| {
-        for (i, q) in list.iter_mut().enumerate() {
-            widgets::number(
-                ui,
-                cx,
-                &format!("operation.orders[{i}]"),
-                &format!("order {}", i + 1),
-                q,
-                "",
-                0.5,
-            );
-            if ui
-                .small_button("×")
-                .on_hover_text("remove this order")
-                .clicked()
-            {
-                remove = Some(i);
-            }
-        }
-        if ui.small_button("+ order").clicked() {
-            let next = list
-                .last()
-                .map_or(0.5, |q| q + if strokes == 2 { 1.0 } else { 0.5 });
-            list.push(next);
-        }
+    ui.horizontal(|ui| {
+        ui.label("orders");
+        let width = ui.available_width() - 8.0;
+        widgets::list_field(ui, cx, "operation.orders", "operation orders", list, width)
+            .on_hover_text("numbers separated by commas, applied when you leave the field");
     });
     fields::note(ui, cx);
-    if let Some(i) = remove {
-        list.remove(i);
-    }
 }
 
 fn regimes_ui(ui: &mut Ui, cx: &mut EditCtx, regimes: &mut Vec<Regime>) {

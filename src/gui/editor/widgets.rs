@@ -16,6 +16,17 @@ fn marked(
     add: impl FnOnce(&mut Ui) -> Response,
 ) -> Response {
     let message = cx.error_at(key);
+    framed(ui, cx, message, add)
+}
+
+/// Adds a widget, framed in red with `message` on hover and under its row when the
+/// error concerns it.
+fn framed(
+    ui: &mut Ui,
+    cx: &mut EditCtx,
+    message: Option<String>,
+    add: impl FnOnce(&mut Ui) -> Response,
+) -> Response {
     let response = ui
         .scope(|ui| {
             if message.is_some() {
@@ -36,7 +47,9 @@ fn marked(
     cx.track(&response);
     match message {
         Some(m) => {
-            cx.shown_at(key);
+            if let Some(key) = cx.error.as_ref().map(|e| e.key.clone()) {
+                cx.shown_at(&key);
+            }
             cx.row_message = Some(m.clone());
             response.on_hover_text(m)
         }
@@ -75,8 +88,10 @@ pub fn number(
                     format_value(x)
                 }
             });
-        if !unit.is_empty() {
-            drag = drag.suffix(format!(" {unit}"));
+        match unit {
+            "" => {}
+            "°" => drag = drag.suffix("°"),
+            _ => drag = drag.suffix(format!(" {unit}")),
         }
         let r = ui.add(drag);
         name_it(ui, &r, access);
@@ -135,42 +150,113 @@ pub fn name_field(
     width: f32,
     check: impl Fn(&str) -> Result<(), String>,
 ) -> (Response, Option<String>) {
-    let id = egui::Id::unique(("torsim.name", key));
-    let rejected = id.with("rejected");
-    let focused = ui.memory(|m| m.has_focus(id));
-    let mut text = match focused {
-        true => ui
-            .data(|d| d.get_temp::<String>(id))
-            .unwrap_or_else(|| current.to_string()),
-        false => current.to_string(),
+    let message = cx.error_at(key);
+    let field = Committed {
+        id_key: key,
+        access,
+        width,
+        refused: "not renamed",
     };
-    let r = marked(ui, cx, key, |ui| {
-        let edit = TextEdit::singleline(&mut text).id(id).desired_width(width);
-        let r = ui.add_sized([width, ui.spacing().interact_size.y], edit);
-        name_it(ui, &r, access);
-        r
+    field.show(ui, cx, message, current, check)
+}
+
+/// A list of numbers typed as `0.5, 1, 1.5` and applied when the field is left; the error
+/// of any of its entries (`prefix[i]`) or of the list itself (`prefix`) marks it.
+pub fn list_field(
+    ui: &mut Ui,
+    cx: &mut EditCtx,
+    prefix: &str,
+    access: &str,
+    values: &mut Vec<f64>,
+    width: f32,
+) -> Response {
+    let message = cx.error_in(prefix);
+    let current: Vec<String> = values.iter().map(|v| format!("{v}")).collect();
+    let field = Committed {
+        id_key: prefix,
+        access,
+        width,
+        refused: "not applied",
+    };
+    let (r, text) = field.show(ui, cx, message, &current.join(", "), |t| {
+        parse_list(t).map(|_| ())
     });
-    if r.has_focus() {
-        ui.data_mut(|d| d.insert_temp(id, text.clone()));
+    if let Some(list) = text.and_then(|t| parse_list(&t).ok()) {
+        *values = list;
     }
-    if r.changed() {
-        ui.data_mut(|d| d.remove::<String>(rejected));
-    }
-    let mut renamed = None;
-    if r.lost_focus() {
-        ui.data_mut(|d| d.remove::<String>(id));
-        let escape = ui.input(|i| i.key_pressed(egui::Key::Escape));
-        if !escape && text != current {
-            match check(&text) {
-                Ok(()) => renamed = Some(text),
-                Err(why) => {
-                    ui.data_mut(|d| d.insert_temp(rejected, why));
+    r
+}
+
+/// Numbers separated by commas or spaces.
+fn parse_list(text: &str) -> Result<Vec<f64>, String> {
+    text.split(|c: char| c == ',' || c == ';' || c.is_whitespace())
+        .filter(|t| !t.is_empty())
+        .map(|t| {
+            t.parse::<f64>()
+                .map_err(|_| format!("`{t}` is not a number"))
+        })
+        .collect()
+}
+
+/// A text field whose content is applied when it is left.
+struct Committed<'a> {
+    /// Key path that makes its egui id.
+    id_key: &'a str,
+    /// Accessible name.
+    access: &'a str,
+    /// Width, points.
+    width: f32,
+    /// What the message says when `check` refuses the text.
+    refused: &'a str,
+}
+
+impl Committed<'_> {
+    fn show(
+        &self,
+        ui: &mut Ui,
+        cx: &mut EditCtx,
+        message: Option<String>,
+        current: &str,
+        check: impl Fn(&str) -> Result<(), String>,
+    ) -> (Response, Option<String>) {
+        let id = egui::Id::unique(("torsim.text", self.id_key));
+        let rejected = id.with("rejected");
+        let focused = ui.memory(|m| m.has_focus(id));
+        let mut text = match focused {
+            true => ui
+                .data(|d| d.get_temp::<String>(id))
+                .unwrap_or_else(|| current.to_string()),
+            false => current.to_string(),
+        };
+        let width = self.width;
+        let r = framed(ui, cx, message, |ui| {
+            let edit = TextEdit::singleline(&mut text).id(id).desired_width(width);
+            let r = ui.add_sized([width, ui.spacing().interact_size.y], edit);
+            name_it(ui, &r, self.access);
+            r
+        });
+        if r.has_focus() {
+            ui.data_mut(|d| d.insert_temp(id, text.clone()));
+        }
+        if r.changed() {
+            ui.data_mut(|d| d.remove::<String>(rejected));
+        }
+        let mut applied = None;
+        if r.lost_focus() {
+            ui.data_mut(|d| d.remove::<String>(id));
+            let escape = ui.input(|i| i.key_pressed(egui::Key::Escape));
+            if !escape && text != current {
+                match check(&text) {
+                    Ok(()) => applied = Some(text),
+                    Err(why) => {
+                        ui.data_mut(|d| d.insert_temp(rejected, why));
+                    }
                 }
             }
         }
+        if let Some(why) = ui.data(|d| d.get_temp::<String>(rejected)) {
+            cx.row_message = Some(format!("{}: {why}", self.refused));
+        }
+        (r, applied)
     }
-    if let Some(why) = ui.data(|d| d.get_temp::<String>(rejected)) {
-        cx.row_message = Some(format!("not renamed: {why}"));
-    }
-    (r, renamed)
 }

@@ -213,7 +213,7 @@ fn engine_shape(model: &Model, g: &Geometry) -> Option<(Rect, Vec<(Rect, Pos2)>)
     let mut cylinders = Vec::new();
     for (i, k) in per_node {
         let Some(c) = g.centers[i] else { continue };
-        let width = (0.8 * g.column_pitch / k as f32).min(14.0);
+        let width = (0.8 * g.column_pitch / k as f32).min(20.0);
         let bottom = c.y - 0.5 * DISK_MAX - 6.0;
         for m in 0..k {
             let x = c.x + (m as f32 - 0.5 * (k as f32 - 1.0)) * width;
