@@ -3,6 +3,7 @@
 //! does all the computing off the GUI thread.
 
 pub mod app;
+pub mod decimate;
 pub mod editor;
 pub mod files;
 pub mod plots;

@@ -4,9 +4,11 @@
 
 mod campbell;
 mod modes;
+mod order_tracks;
 mod recording;
 mod response;
 mod run_controls;
+mod series;
 mod stft;
 mod traces;
 
