@@ -152,6 +152,7 @@ impl TorsimApp {
                 self.results.errors.clear();
                 let spec = self.traces.spec(&self.model, self.trace_speed_rpm);
                 self.results.trace_progress = 0.0;
+                self.results.trace_label = trace_state::pending_label(&spec);
                 self.worker.request(
                     self.results.generation,
                     &self.model,

@@ -4,6 +4,7 @@
 //! [`export`].
 
 pub mod app;
+pub mod decimate;
 pub mod editor;
 pub mod export;
 pub mod files;
@@ -25,11 +26,11 @@ mod tests_edit;
 #[cfg(test)]
 mod tests_edit_cases;
 #[cfg(test)]
+mod tests_edit_structure;
+#[cfg(test)]
 mod tests_plots;
 #[cfg(test)]
 mod tests_traces;
-#[cfg(test)]
-mod tests_edit_structure;
 
 use crate::cli::error::CliError;
 use std::path::PathBuf;

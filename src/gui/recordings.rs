@@ -44,7 +44,6 @@ pub fn poll(app: &mut TorsimApp) {
 /// Opens the recording at `path` (a CSV with its `.toml` sidecar): it is read and
 /// analysed on the simulation thread, and the time run follows its regime.
 pub fn open_recording(app: &mut TorsimApp, path: PathBuf) {
-    app.status = format!("opening recording {}", path.display());
     app.traces.recording = Some(path);
     app.traces.mode = TraceMode::Recording;
     app.results.recording = None;

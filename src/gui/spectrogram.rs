@@ -93,20 +93,21 @@ impl SpectrogramSet {
         })
     }
 
-    /// Reference speed at `t_s`, rpm, interpolated between window centres.
+    /// Reference speed at `t_s`, rpm, interpolated between window centres (extended
+    /// linearly beyond the first and last).
     pub fn speed_at(&self, t_s: f64) -> f64 {
         interpolate(&self.times_s, &self.speeds_rpm, t_s)
     }
 }
 
-/// Linear interpolation in `(x, y)`, held at the ends.
+/// Linear interpolation in `(x, y)` (`x` increasing), extended along the end segments.
 pub fn interpolate(x: &[f64], y: &[f64], at: f64) -> f64 {
-    let i = x.partition_point(|&v| v < at);
-    match (i, x.len()) {
-        (_, 0) => 0.0,
-        (0, _) => y[0],
-        (i, n) if i >= n => y[n - 1],
-        (i, _) => {
+    let n = x.len().min(y.len());
+    match n {
+        0 => 0.0,
+        1 => y[0],
+        _ => {
+            let i = x[..n].partition_point(|&v| v < at).clamp(1, n - 1);
             let u = (at - x[i - 1]) / (x[i] - x[i - 1]);
             y[i - 1] + u * (y[i] - y[i - 1])
         }
@@ -178,6 +179,8 @@ mod tests {
         // Halfway between the 2nd and 3rd stops.
         assert_eq!(colour(0.375), Color32::from_rgb(46, 114, 140));
         assert_eq!(interpolate(&[0.0, 1.0], &[10.0, 20.0], 0.25), 12.5);
-        assert_eq!(interpolate(&[0.0, 1.0], &[10.0, 20.0], 3.0), 20.0);
+        assert_eq!(interpolate(&[0.0, 1.0], &[10.0, 20.0], 3.0), 40.0);
+        assert_eq!(interpolate(&[1.0, 2.0, 4.0], &[10.0, 20.0, 20.0], 0.5), 5.0);
+        assert_eq!(interpolate(&[1.0], &[7.0], 9.0), 7.0);
     }
 }

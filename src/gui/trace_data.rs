@@ -1,7 +1,6 @@
 //! The time run as the GUI holds it: what runs ([`TraceLayout`], sent once when the run
 //! starts recording), the samples in plot-ready groups ([`TraceChunk`], a few times per
-//! second), accumulated in [`LiveTrace`]; and [`decimate`], which keeps a long run cheap
-//! to draw (the min and max of each pixel column).
+//! second), accumulated in [`LiveTrace`].
 
 use std::sync::Arc;
 use torsim::transient::RunKind;
@@ -68,6 +67,8 @@ pub struct TraceLayout {
     pub load: f64,
     /// Reference node name.
     pub reference: String,
+    /// Reference revolutions per working cycle (2 for a 4-stroke engine).
+    pub cycle_rev: f64,
     /// Mean speed of each node over the reference's (magnitude), model order.
     pub speed_ratio: Vec<f64>,
     /// The groups, each with its kind.
@@ -75,16 +76,24 @@ pub struct TraceLayout {
 }
 
 impl TraceLayout {
-    /// Recorded duration, s.
-    pub fn duration_s(&self) -> f64 {
-        match self.kind {
-            RunKind::Steady { duration_s, .. } | RunKind::Ramp { duration_s, .. } => duration_s,
-        }
-    }
-
     /// Imposed mean speed of the reference at `t_s` from the start of recording, rpm.
     pub fn speed_at(&self, t_s: f64) -> f64 {
         profile_rpm(self.kind, t_s)
+    }
+
+    /// The time range a plot opens on, s: a steady run's first six working cycles (its
+    /// waveform), a ramp's whole duration.
+    pub fn opening_range_s(&self) -> [f64; 2] {
+        match self.kind {
+            RunKind::Steady {
+                speed_rpm,
+                duration_s,
+            } => [
+                0.0,
+                (6.0 * self.cycle_rev * 60.0 / speed_rpm).min(duration_s),
+            ],
+            RunKind::Ramp { duration_s, .. } => [0.0, duration_s],
+        }
     }
 
     /// True for a run-up or run-down.
@@ -186,94 +195,5 @@ impl LiveTrace {
             .zip(&self.groups)
             .find(|((k, _), _)| *k == kind)
             .map(|((_, l), s)| (l, s))
-    }
-}
-
-/// At most `2 · buckets` points of `(time_s, values − baseline(time_s))` within
-/// `x_range` (plus one point either side): the min and max of each bucket, in time
-/// order, so peaks survive at any zoom. Series short enough are returned whole.
-pub fn decimate(
-    time_s: &[f64],
-    values: &[f64],
-    baseline: &dyn Fn(f64) -> f64,
-    x_range: [f64; 2],
-    buckets: usize,
-) -> Vec<[f64; 2]> {
-    let n = time_s.len().min(values.len());
-    let lo = time_s[..n]
-        .partition_point(|&t| t < x_range[0])
-        .saturating_sub(1);
-    let hi = (time_s[..n].partition_point(|&t| t <= x_range[1]) + 1).min(n);
-    if hi <= lo {
-        return Vec::new();
-    }
-    let count = hi - lo;
-    let buckets = buckets.max(1);
-    let value = |i: usize| values[i] - baseline(time_s[i]);
-    if count <= 2 * buckets {
-        return (lo..hi).map(|i| [time_s[i], value(i)]).collect();
-    }
-    let mut points = Vec::with_capacity(2 * buckets + 2);
-    let per = count.div_ceil(buckets);
-    for start in (lo..hi).step_by(per) {
-        let end = (start + per).min(hi);
-        let (mut i_min, mut v_min, mut i_max, mut v_max) = (start, f64::MAX, start, f64::MIN);
-        for i in start..end {
-            let v = value(i);
-            if v < v_min {
-                (i_min, v_min) = (i, v);
-            }
-            if v > v_max {
-                (i_max, v_max) = (i, v);
-            }
-        }
-        let ((a, va), (b, vb)) = if i_min <= i_max {
-            ((i_min, v_min), (i_max, v_max))
-        } else {
-            ((i_max, v_max), (i_min, v_min))
-        };
-        points.push([time_s[a], va]);
-        if b != a {
-            points.push([time_s[b], vb]);
-        }
-    }
-    points
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// A 1 Hz sine sampled at 10 kHz for 10 s, decimated to 500 buckets: the extremes
-    /// ±1 survive exactly (they are samples), the points stay in time order and number at
-    /// most 1000; a zoomed range keeps its own samples whole.
-    #[test]
-    fn decimation_keeps_peaks_and_order() {
-        let t: Vec<f64> = (0..100_000).map(|i| i as f64 * 1e-4).collect();
-        let v: Vec<f64> = t
-            .iter()
-            .map(|t| (std::f64::consts::TAU * (t + 0.25)).sin())
-            .collect();
-        let none = |_: f64| 0.0;
-        let d = decimate(&t, &v, &none, [0.0, 10.0], 500);
-        assert!(d.len() <= 1000, "{}", d.len());
-        assert!(d.windows(2).all(|w| w[0][0] < w[1][0]));
-        let max = d.iter().fold(f64::MIN, |m, p| m.max(p[1]));
-        let min = d.iter().fold(f64::MAX, |m, p| m.min(p[1]));
-        assert_eq!(max, v.iter().cloned().fold(f64::MIN, f64::max));
-        assert_eq!(min, v.iter().cloned().fold(f64::MAX, f64::min));
-        let zoom = decimate(&t, &v, &none, [1.0, 1.01], 500);
-        assert!(
-            (102..=104).contains(&zoom.len()),
-            "the ~101 samples inside and one either side: {}",
-            zoom.len()
-        );
-        assert!(decimate(&t, &v, &none, [20.0, 30.0], 500).len() <= 1);
-        // A baseline is subtracted before the extremes are picked: a ramp of 1000 per
-        // second under the sine leaves the sine.
-        let ramp: Vec<f64> = t.iter().zip(&v).map(|(t, v)| 1000.0 * t + v).collect();
-        let d = decimate(&t, &ramp, &|t| 1000.0 * t, [0.0, 10.0], 500);
-        let max = d.iter().fold(f64::MIN, |m, p| m.max(p[1]));
-        assert!((max - 1.0).abs() < 1e-9, "{max}");
     }
 }

@@ -34,7 +34,7 @@ fn is_rubber(model: &Model, c: usize) -> bool {
 
 impl SeriesBuilder {
     /// The layout of a run of `model` whose first chunk is `first`; `visible_nodes`
-    /// are the nodes shown at first (the others listed, hidden; all when empty).
+    /// are the nodes shown at first (a recording's stations), the others listed, hidden.
     pub fn new(
         model: &Model,
         system: &System,
@@ -48,9 +48,22 @@ impl SeriesBuilder {
         let node = |name: &str| names.iter().position(|n| n == name);
         let mut groups = Vec::new();
         let all = |n: usize| vec![true; n];
+        // Without measured stations: the reference, both sides of every rubber stage, and
+        // the ends of the driveline (a crank's throws add little but clutter).
+        let mut stations: Vec<&str> = visible_nodes.iter().map(String::as_str).collect();
+        if stations.is_empty() {
+            stations.push(&names[system.reference_node]);
+            for c in &model.connections {
+                if matches!(c.kind, ConnectionKind::Rubber(_)) {
+                    stations.extend([c.from.as_str(), c.to.as_str()]);
+                }
+            }
+            stations.extend(names.first().map(String::as_str));
+            stations.extend(names.last().map(String::as_str));
+        }
         let visible = names
             .iter()
-            .map(|n| visible_nodes.is_empty() || visible_nodes.contains(n))
+            .map(|n| stations.contains(&n.as_str()))
             .collect();
         groups.push((
             GroupKind::Speed,
@@ -91,7 +104,7 @@ impl SeriesBuilder {
             GroupKind::Torque,
             GroupLayout {
                 title: "torque".into(),
-                axis: "torque [N·m] (own shaft)".into(),
+                axis: "torque [N·m]".into(),
                 names: first
                     .torque_nm
                     .iter()
@@ -111,7 +124,7 @@ impl SeriesBuilder {
             GroupKind::PowerLoss,
             GroupLayout {
                 title: "power loss".into(),
-                axis: "power loss [W] (cycle mean)".into(),
+                axis: "power loss [W]".into(),
                 names: lossy
                     .iter()
                     .map(|&i| connection(first.power_w[i].0))
@@ -124,7 +137,7 @@ impl SeriesBuilder {
                 GroupKind::Temperature,
                 GroupLayout {
                     title: "rubber temperature".into(),
-                    axis: "rubber temperature [°C]".into(),
+                    axis: "rubber [°C]".into(),
                     names: first
                         .temperature_c
                         .iter()
@@ -139,6 +152,7 @@ impl SeriesBuilder {
             kind,
             load,
             reference: names[system.reference_node].clone(),
+            cycle_rev: f64::from(model.strokes()) / 2.0,
             speed_ratio: system.speed_ratio.iter().map(|r| r.abs()).collect(),
             groups,
         };

@@ -63,10 +63,14 @@ pub struct TraceState {
     pub track_order: f64,
     /// The spectrogram texture and what it shows: (generation, measured, station).
     pub texture: Option<((u64, bool, String), egui::TextureHandle)>,
+    /// Per group of the time run's layout, per series: drawn.
+    pub shown: Vec<Vec<bool>>,
+    /// The view shown in the last frame.
+    pub shown_view: Option<TraceView>,
     /// Show IAS about each station's mean speed (default) rather than absolute.
     pub ias_about_mean: bool,
-    /// Generation of the run last drawn (a new run resets zoom and legend).
-    pub drawn: Option<u64>,
+    /// The kind of run last drawn (another kind resets zoom and legend).
+    pub drawn: Option<torsim::transient::RunKind>,
     /// Generation and station of the order tracks last drawn.
     pub tracks_drawn: Option<(u64, String)>,
 }
@@ -87,6 +91,8 @@ impl Default for TraceState {
             measured_stft: false,
             track_order: 0.0,
             texture: None,
+            shown: Vec::new(),
+            shown_view: None,
             ias_about_mean: true,
             drawn: None,
             tracks_drawn: None,
@@ -121,6 +127,14 @@ impl TraceState {
     }
 }
 
+/// What a request's time run will be, for a person, until the worker says.
+pub fn pending_label(spec: &TraceSpec) -> String {
+    match super::trace_job::resolve(spec, None) {
+        Ok(kind) => super::trace_job::describe(kind),
+        Err(_) => "the recording's regime (reading the recording)".into(),
+    }
+}
+
 /// Takes a time-run message of the current generation (others are dropped).
 pub fn receive(app: &mut TorsimApp, message: SimResult) {
     let current = app.results.generation;
@@ -141,6 +155,9 @@ pub fn receive(app: &mut TorsimApp, message: SimResult) {
         }
         SimResult::TraceAnalysis(g, a) if g == current => r.trace_analysis = Some(a),
         SimResult::Recording(g, view) if g == current => {
+            if r.recording.is_none() {
+                app.status = format!("opened recording {}", view.file);
+            }
             app.stations = view.stations();
             r.recording = Some(view);
         }

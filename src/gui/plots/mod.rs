@@ -7,12 +7,14 @@ mod animation;
 mod campbell;
 mod crossing;
 mod modes;
+mod order_tracks;
 mod quantity;
 mod recording;
 mod response;
 mod run_controls;
 mod series;
 mod stft;
+mod time_series;
 mod traces;
 
 pub use super::export::PlotData;

@@ -11,8 +11,8 @@ use egui::{Color32, Ui};
 use egui_plot::{Bar, BarChart, Legend, Line, LineStyle, Plot};
 use torsim::signal::{Analysis, OrderAmplitude, StationAnalysis};
 
-const SIMULATED: Color32 = Color32::from_rgb(31, 95, 191);
-const MEASURED: Color32 = Color32::from_rgb(120, 120, 120);
+const SIMULATED: Color32 = Color32::from_rgb(60, 130, 230);
+const MEASURED: Color32 = Color32::from_rgb(235, 150, 40);
 
 /// The largest order of a station's averaged cycle: (order, rpm).
 pub fn dominant(orders: &[OrderAmplitude]) -> Option<(f64, f64)> {
@@ -99,15 +99,34 @@ pub fn orders_ui(app: &mut TorsimApp, ui: &mut Ui) {
         });
     }
     let per =
-        ((ui.available_height() - 8.0 * shown.len() as f32) / shown.len().max(1) as f32).max(170.0);
+        ((ui.available_height() - 8.0 * shown.len() as f32) / shown.len().max(1) as f32).max(150.0);
+    // Orders up to the last one above 1 % of the largest (at least 6).
+    let peak = sim
+        .analysis
+        .stations
+        .iter()
+        .chain(meas.iter().flat_map(|m| &m.stations))
+        .flat_map(|s| &s.orders)
+        .fold(0.0_f64, |m, o| m.max(o.amplitude));
+    let last_order = sim
+        .analysis
+        .stations
+        .iter()
+        .chain(meas.iter().flat_map(|m| &m.stations))
+        .flat_map(|s| &s.orders)
+        .filter(|o| o.amplitude > 0.01 * peak)
+        .fold(6.0_f64, |m, o| m.max(o.order + 1.0));
     egui::ScrollArea::vertical().show(ui, |ui| {
         for (i, name) in shown.iter().enumerate() {
             let s = find(&sim.analysis, name);
             let m = meas.and_then(|a| find(a, name));
-            let plot = Plot::new(("orders", i))
+            let mut plot = Plot::new(("orders", i))
                 .height(per)
-                .legend(Legend::default().follow_insertion_order(true))
-                .y_axis_label(format!("{name} [rpm] 0-peak"));
+                .y_axis_min_width(super::time_series::Y_AXIS_W)
+                .y_grid_spacer(super::time_series::nice_grid())
+                .legend(Legend::default().follow_insertion_order(true).title(name))
+                .y_axis_label("amplitude [rpm] 0-pk");
+            let last = i + 1 == shown.len();
             if ramp {
                 let q = app.traces.track_order;
                 let tracks = |a: &Analysis, s: Option<&StationAnalysis>| -> Vec<[f64; 2]> {
@@ -125,7 +144,10 @@ pub fn orders_ui(app: &mut TorsimApp, ui: &mut Ui) {
                 };
                 let sim_track = tracks(&sim.analysis, s);
                 let meas_track = meas.map(|a| tracks(a, m)).unwrap_or_default();
-                plot.x_axis_label("reference speed [rpm]").show(ui, |plot| {
+                if last {
+                    plot = plot.x_axis_label("reference speed [rpm]");
+                }
+                plot.show(ui, |plot| {
                     plot.line(
                         Line::new(format!("simulated, order {q}"), sim_track).color(SIMULATED),
                     );
@@ -162,12 +184,17 @@ pub fn orders_ui(app: &mut TorsimApp, ui: &mut Ui) {
                 let dx = if m.is_some() { 0.11 } else { 0.0 };
                 let sim_bars = bars(s, -dx, SIMULATED, "simulated");
                 let meas_bars = m.map(|m| bars(Some(m), dx, MEASURED, "measured"));
-                plot.x_axis_label("engine order").show(ui, |plot| {
-                    plot.bar_chart(sim_bars);
-                    if let Some(b) = meas_bars {
-                        plot.bar_chart(b);
-                    }
-                });
+                if last {
+                    plot = plot.x_axis_label("engine order");
+                }
+                plot.include_y(0.0)
+                    .default_x_bounds(0.0, last_order)
+                    .show(ui, |plot| {
+                        plot.bar_chart(sim_bars);
+                        if let Some(b) = meas_bars {
+                            plot.bar_chart(b);
+                        }
+                    });
             }
         }
     });

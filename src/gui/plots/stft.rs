@@ -4,20 +4,21 @@
 //! and the model's natural frequencies over it, a colour scale in dB re 1 rpm; below it
 //! the order tracks of that station, the recording's dashed when one is open.
 
-use super::traces::{time_link, visible_range};
-use super::{mode_color, traces};
+use super::order_tracks;
+use super::time_series::{self, time_link};
 use crate::gui::app::TorsimApp;
 use crate::gui::spectrogram::{RANGE_DB, SpectrogramSet, colour};
+use crate::gui::trace_data::profile_rpm;
 use egui::{Align2, Color32, Rect, Sense, Stroke, Ui, Vec2};
 use egui_plot::{
-    AxisHints, HLine, HoverPosition, ItemId, Legend, Line, LineStyle, Plot, PlotImage, PlotPoint,
-    Text,
+    AxisHints, HLine, HoverPosition, Line, LineStyle, Plot, PlotImage, PlotPoint, Text,
 };
 use std::sync::Arc;
 use torsim::signal::{Analysis, StationAnalysis};
+use torsim::transient::RunKind;
 
 /// Width of the colour scale beside the spectrogram, points.
-const SCALE_W: f32 = 78.0;
+pub const SCALE_W: f32 = 78.0;
 
 /// The spectrogram view.
 pub fn spectrogram_ui(app: &mut TorsimApp, ui: &mut Ui) {
@@ -97,7 +98,14 @@ pub fn spectrogram_ui(app: &mut TorsimApp, ui: &mut Ui) {
     let height = (ui.available_height() * 0.6).max(220.0);
     let [t0, t1] = set.time_range_s;
     let [f0, f1] = set.freq_range_hz;
-    let speed_axis = set.clone();
+    // The ramp on the time axis: round speeds get the grid lines.
+    let ramp = if use_measured {
+        measured.as_ref().map(|r| r.regime)
+    } else {
+        app.results.live.as_ref().map(|l| l.layout.kind)
+    };
+    let axis = SpeedAxis::new(ramp, set.clone());
+    let speed_axis = axis.clone();
     let modes: Vec<f64> = app
         .results
         .campbell
@@ -120,18 +128,19 @@ pub fn spectrogram_ui(app: &mut TorsimApp, ui: &mut Ui) {
         Plot::new("spectrogram")
             .height(height)
             .width((ui.available_width() - SCALE_W).max(200.0))
-            .y_axis_min_width(traces::Y_AXIS_W)
+            .y_axis_min_width(time_series::Y_AXIS_W)
             .link_axis(time_link(), [true, false])
             .link_cursor(time_link(), [true, false])
             .include_x(t0)
             .include_x(t1)
             .default_y_bounds(0.0, f_view)
             .y_axis_label("frequency [Hz]")
+            .x_grid_spacer(axis.grid())
             .custom_x_axes(vec![
                 AxisHints::new_x().label("time [s]"),
                 AxisHints::new_x()
                     .label("reference speed [rpm]")
-                    .formatter(move |mark, _| format!("{:.0}", speed_axis.speed_at(mark.value))),
+                    .formatter(move |mark, _| format!("{:.0}", speed_axis.rpm(mark.value))),
             ])
             .label_formatter(move |pos| {
                 let p = match pos {
@@ -180,7 +189,8 @@ pub fn spectrogram_ui(app: &mut TorsimApp, ui: &mut Ui) {
                         .map(|(&t, &n)| [t, q * n / 60.0])
                         .filter(|p| p[1] <= f1)
                         .collect();
-                    let Some(&[t_end, f_end]) = line.last() else {
+                    // The label where the line leaves the opening view.
+                    let Some(&[t_end, f_end]) = line.iter().rfind(|p| p[1] <= f_view) else {
                         continue;
                     };
                     let strong = (q / major - (q / major).round()).abs() < 1e-9;
@@ -192,10 +202,16 @@ pub fn spectrogram_ui(app: &mut TorsimApp, ui: &mut Ui) {
                             .style(LineStyle::dashed_loose())
                             .allow_hover(false),
                     );
+                    // Lines leaving through the top are labelled below their end.
+                    let anchor = if f_end > 0.95 * f_view {
+                        Align2::RIGHT_TOP
+                    } else {
+                        Align2::RIGHT_BOTTOM
+                    };
                     plot.text(
                         Text::new("", PlotPoint::new(t_end, f_end), format!("{q}"))
                             .color(Color32::WHITE)
-                            .anchor(Align2::RIGHT_BOTTOM),
+                            .anchor(anchor),
                     );
                 }
             });
@@ -205,8 +221,46 @@ pub fn spectrogram_ui(app: &mut TorsimApp, ui: &mut Ui) {
     let other = other.and_then(|(set, a)| Some((set, find(a, &app.traces.station)?)));
     let key = (app.results.generation, app.traces.station.clone());
     let fresh = app.traces.tracks_drawn.as_ref() != Some(&key);
-    order_tracks_ui(ui, &set, station, other, major, fresh);
+    order_tracks::order_tracks_ui(ui, &set, &axis, station, other, major, fresh);
+    if fresh {
+        ui.ctx().request_repaint();
+    }
     app.traces.tracks_drawn = Some(key);
+}
+
+/// The reference speed along a run-up's time axis: the imposed (or fitted) ramp when
+/// known, else interpolated between the STFT windows.
+#[derive(Clone)]
+pub struct SpeedAxis {
+    ramp: Option<RunKind>,
+    set: Arc<SpectrogramSet>,
+}
+
+impl SpeedAxis {
+    fn new(ramp: Option<RunKind>, set: Arc<SpectrogramSet>) -> Self {
+        Self { ramp, set }
+    }
+
+    /// Reference speed at `t_s`, rpm.
+    pub fn rpm(&self, t_s: f64) -> f64 {
+        match self.ramp {
+            Some(kind) => profile_rpm(kind, t_s),
+            None => self.set.speed_at(t_s),
+        }
+    }
+
+    /// Grid lines at round speeds.
+    pub fn grid(&self) -> impl Fn(egui_plot::GridInput) -> Vec<egui_plot::GridMark> + use<> {
+        let (from, rate) = match self.ramp {
+            Some(RunKind::Ramp {
+                from_rpm,
+                to_rpm,
+                duration_s,
+            }) => (from_rpm, (to_rpm - from_rpm) / duration_s),
+            _ => (0.0, 0.0),
+        };
+        time_series::speed_grid(from, rate)
+    }
 }
 
 /// Orders at multiples of this step are the engine's main ones (half the cylinder count
@@ -265,84 +319,4 @@ fn colour_scale_ui(ui: &mut Ui, [bottom, top]: [f64; 2], height: f32) {
         );
         db -= 10.0;
     }
-}
-
-/// The order tracks of a station over the run-up (rpm 0-peak), the recording's dashed;
-/// orders other than the main ones start hidden (`fresh`: first drawn for this run).
-fn order_tracks_ui(
-    ui: &mut Ui,
-    set: &Arc<SpectrogramSet>,
-    station: Option<&StationAnalysis>,
-    other: Option<(Arc<SpectrogramSet>, &StationAnalysis)>,
-    major: f64,
-    fresh: bool,
-) {
-    let Some(tracks) = station.and_then(|s| s.stft.as_ref()) else {
-        return;
-    };
-    let hidden: Vec<ItemId> = set
-        .orders
-        .iter()
-        .filter(|q| (*q / major - (*q / major).round()).abs() > 1e-9)
-        .map(|q| ItemId::new(format!("order {q}")))
-        .collect();
-    let speed = set.clone();
-    let speed_axis = set.clone();
-    let mut legend = Legend::default().follow_insertion_order(true);
-    if fresh {
-        legend = legend.hidden_items(hidden);
-    }
-    let label = if other.is_some() {
-        "order amplitude [rpm] (0-peak; dashed: measured)"
-    } else {
-        "order amplitude [rpm] (0-peak)"
-    };
-    Plot::new("order-tracks")
-        .legend(legend)
-        .width((ui.available_width() - SCALE_W).max(200.0))
-        .y_axis_min_width(traces::Y_AXIS_W)
-        .link_axis(time_link(), [true, false])
-        .link_cursor(time_link(), [true, false])
-        .custom_x_axes(vec![
-            AxisHints::new_x().label("time [s]"),
-            AxisHints::new_x()
-                .label("reference speed [rpm]")
-                .formatter(move |mark, _| format!("{:.0}", speed_axis.speed_at(mark.value))),
-        ])
-        .y_axis_label(label)
-        .label_formatter(move |pos| {
-            let (name, p) = match pos {
-                HoverPosition::NearDataPoint {
-                    plot_name,
-                    position,
-                    ..
-                } => (*plot_name, *position),
-                HoverPosition::Elsewhere { position } => ("", *position),
-            };
-            Some(format!(
-                "{name}\nt = {:.2} s ({:.0} rpm)\n{:.3} rpm",
-                p.x,
-                speed.speed_at(p.x),
-                p.y
-            ))
-        })
-        .show(ui, |plot| {
-            let range = visible_range(plot);
-            let tracked = set.orders.iter().zip(&tracks.order_tracks_rpm).enumerate();
-            for (k, (q, track)) in tracked.filter(|(_, (q, _))| q.fract() == 0.0) {
-                let p = traces::points(&set.times_s, track, 0.0, &|_| 0.0, range, 2000);
-                plot.line(Line::new(format!("order {q}"), p).color(mode_color(k)));
-                let Some((o_set, o)) = &other else {
-                    continue;
-                };
-                if let Some(track) = o.stft.as_ref().and_then(|s| s.order_tracks_rpm.get(k)) {
-                    let p = traces::points(&o_set.times_s, track, 0.0, &|_| 0.0, range, 2000);
-                    plot.line(
-                        Line::new(format!("order {q}"), p)
-                            .color(mode_color(k))
-                            .style(LineStyle::dashed_dense()),
-                    );
-                }
-            }
-        });
 }

@@ -4,13 +4,13 @@
 //! cursors linked, growing while the run streams in, a recording's stations overlaid),
 //! the run-up spectrogram ([`super::stft`]) or the orders ([`super::recording`]).
 
+use super::time_series::{self, Look, Y_AXIS_W, draw, hover_label, nice_grid, time_link};
 use super::{mode_color, recording, run_controls, stft};
 use crate::gui::app::TorsimApp;
-use crate::gui::trace_data::{GroupKind, TraceLayout, decimate};
+use crate::gui::trace_data::GroupKind;
 use crate::gui::trace_state::TraceView;
-use egui::{Id, Ui};
-use egui_plot::{HoverPosition, ItemId, Legend, Line, Plot, PlotUi};
-use std::sync::Arc;
+use egui::Ui;
+use egui_plot::{Legend, Plot};
 use torsim::recording::ChannelKind;
 
 /// The traces tab.
@@ -20,75 +20,15 @@ pub fn traces_ui(app: &mut TorsimApp, ui: &mut Ui) {
     run_controls::recording_ui(app, ui);
     run_controls::view_ui(app, ui);
     ui.separator();
+    if app.traces.shown_view != Some(app.traces.view) {
+        // Plots shown for the first time size their axes in the frame after.
+        app.traces.shown_view = Some(app.traces.view);
+        ui.ctx().request_repaint();
+    }
     match app.traces.view {
         TraceView::Traces => time_traces_ui(app, ui),
         TraceView::Spectrogram => stft::spectrogram_ui(app, ui),
         TraceView::Orders => recording::orders_ui(app, ui),
-    }
-}
-
-/// The x axes (time) of every time plot move together.
-pub fn time_link() -> Id {
-    Id::unique("torsim-time-axis")
-}
-
-/// The visible time range of a plot (all of it while it follows the data), with a
-/// plot width of margin either side.
-pub fn visible_range(plot: &PlotUi<'_>) -> [f64; 2] {
-    let b = plot.plot_bounds();
-    if plot.auto_bounds().x || !b.is_valid_x() {
-        return [f64::NEG_INFINITY, f64::INFINITY];
-    }
-    let w = b.width();
-    [b.min()[0] - w, b.max()[0] + w]
-}
-
-/// Points of `(time_s + offset_s, values − baseline(time_s + offset_s))` within `range`,
-/// decimated to `buckets`.
-pub fn points(
-    time_s: &[f64],
-    values: &[f64],
-    offset_s: f64,
-    baseline: &dyn Fn(f64) -> f64,
-    range: [f64; 2],
-    buckets: usize,
-) -> Vec<[f64; 2]> {
-    let shifted = |t: f64| baseline(t + offset_s);
-    let mut p = decimate(
-        time_s,
-        values,
-        &shifted,
-        [range[0] - offset_s, range[1] - offset_s],
-        buckets,
-    );
-    p.iter_mut().for_each(|x| x[0] += offset_s);
-    p
-}
-
-/// Hover read-out: the series, time with the reference speed, and value with unit.
-pub fn hover_label(
-    layout: Arc<TraceLayout>,
-    unit: &'static str,
-) -> impl Fn(&HoverPosition<'_>) -> Option<String> {
-    move |pos| {
-        let (name, p) = match pos {
-            HoverPosition::NearDataPoint {
-                plot_name,
-                position,
-                ..
-            } => (*plot_name, *position),
-            HoverPosition::Elsewhere { position } => ("", *position),
-        };
-        let head = if name.is_empty() {
-            String::new()
-        } else {
-            format!("{name}\n")
-        };
-        let speed = layout.speed_at(p.x);
-        Some(format!(
-            "{head}t = {:.4} s ({speed:.0} rpm)\n{:.3} {unit}",
-            p.x, p.y
-        ))
     }
 }
 
@@ -102,21 +42,73 @@ fn unit(kind: GroupKind) -> &'static str {
     }
 }
 
-/// Width of the y axes of stacked plots, points (equal, so linked time axes line up).
-pub const Y_AXIS_W: f32 = 64.0;
+/// The series shown per group: the layout's defaults for a run of a new kind (or a new
+/// layout), else the user's choice.
+fn shown(app: &mut TorsimApp, fresh: bool) -> Vec<Vec<bool>> {
+    let Some(live) = &app.results.live else {
+        return Vec::new();
+    };
+    let defaults: Vec<Vec<bool>> = live
+        .layout
+        .groups
+        .iter()
+        .map(|(_, g)| g.visible.clone())
+        .collect();
+    let same_shape = app.traces.shown.len() == defaults.len()
+        && app
+            .traces
+            .shown
+            .iter()
+            .zip(&defaults)
+            .all(|(a, b)| a.len() == b.len());
+    if fresh || !same_shape {
+        app.traces.shown = defaults;
+    }
+    app.traces.shown.clone()
+}
+
+/// A menu per group with more than one series: which are drawn.
+fn series_menus_ui(app: &mut TorsimApp, ui: &mut Ui) {
+    let Some(live) = &app.results.live else {
+        return;
+    };
+    let layout = live.layout.clone();
+    for ((_, group), shown) in layout.groups.iter().zip(app.traces.shown.iter_mut()) {
+        if group.names.len() < 2 {
+            continue;
+        }
+        let count = shown.iter().filter(|s| **s).count();
+        ui.menu_button(
+            format!("{} ({count}/{})", group.title, group.names.len()),
+            |ui| {
+                for (name, on) in group.names.iter().zip(shown.iter_mut()) {
+                    ui.checkbox(on, name);
+                }
+            },
+        );
+    }
+}
 
 /// One plot per quantity, stacked; IAS twice as tall.
 fn time_traces_ui(app: &mut TorsimApp, ui: &mut Ui) {
-    if app.results.live.is_none() {
+    let Some(kind) = app.results.live.as_ref().map(|l| l.layout.kind) else {
         ui.label("Waiting for the first samples of the time run…");
         return;
-    }
+    };
+    // A run of another kind opens with its own zoom and series; a re-run of the same
+    // (after an edit) keeps the user's.
+    let fresh = app.traces.drawn != Some(kind);
+    let shown = shown(app, fresh);
     ui.horizontal(|ui| {
         ui.checkbox(
             &mut app.traces.ias_about_mean,
             "IAS about each station's mean speed",
         )
         .on_hover_text("the vibration without the mean speed (or the run-up ramp), in rpm");
+        ui.separator();
+        ui.label("show");
+        series_menus_ui(app, ui);
+        ui.separator();
         ui.weak("drag to pan, scroll or box-zoom (right drag), double-click to reset");
     });
     let Some(live) = &app.results.live else {
@@ -124,7 +116,6 @@ fn time_traces_ui(app: &mut TorsimApp, ui: &mut Ui) {
     };
     let about_mean = app.traces.ias_about_mean;
     let layout = live.layout.clone();
-    let fresh = app.traces.drawn != Some(live.generation);
     let measured = app.results.recording.clone();
     let shift_s = app
         .results
@@ -135,21 +126,14 @@ fn time_traces_ui(app: &mut TorsimApp, ui: &mut Ui) {
     let gap = ui.spacing().item_spacing.y;
     let unit_h = ((ui.available_height() - gap * n as f32) / (n + 1) as f32).max(90.0);
     let buckets = ui.available_width().max(100.0) as usize;
-    let duration = layout.duration_s();
+    let opening = layout.opening_range_s();
     egui::ScrollArea::vertical().show(ui, |ui| {
         for (i, ((kind, group), samples)) in layout.groups.iter().zip(&live.groups).enumerate() {
             let kind = *kind;
-            let hidden: Vec<ItemId> = group
-                .names
-                .iter()
-                .zip(&group.visible)
-                .filter(|(_, v)| !**v)
-                .map(|(name, _)| ItemId::new(name))
-                .collect();
-            let mut legend = Legend::default().follow_insertion_order(true);
-            if fresh {
-                legend = legend.hidden_items(hidden);
-            }
+            let legend = Legend::default().follow_insertion_order(true);
+            let visible = &shown[i];
+            // Colours by rank among the series shown, so that they differ.
+            let colour = |k: usize| mode_color(visible[..k].iter().filter(|v| **v).count());
             let axis = if kind == GroupKind::Speed && about_mean {
                 "IAS - mean speed [rpm] (own shaft)".to_string()
             } else {
@@ -158,11 +142,11 @@ fn time_traces_ui(app: &mut TorsimApp, ui: &mut Ui) {
             let mut plot = Plot::new(("trace", i))
                 .height(if i == 0 { 2.0 * unit_h } else { unit_h })
                 .y_axis_min_width(Y_AXIS_W)
+                .y_grid_spacer(nice_grid())
                 .legend(legend)
                 .link_axis(time_link(), [true, false])
                 .link_cursor(time_link(), [true, false])
-                .include_x(0.0)
-                .include_x(duration)
+                .default_x_bounds(opening[0], opening[1])
                 .y_axis_label(axis)
                 .label_formatter(hover_label(layout.clone(), unit(kind)));
             if i + 1 == n {
@@ -185,8 +169,8 @@ fn time_traces_ui(app: &mut TorsimApp, ui: &mut Ui) {
                 }
             };
             plot.show(ui, |plot| {
-                let range = visible_range(plot);
-                // Measured first: a pale wide band under the simulated line.
+                let range = time_series::visible_range(plot);
+                // Measured first, under the simulated.
                 if let Some(m) = &measured {
                     let offset = shift_s - m.t0_s;
                     for c in &m.recording.channels {
@@ -200,6 +184,9 @@ fn time_traces_ui(app: &mut TorsimApp, ui: &mut Ui) {
                         let Some(k) = group.names.iter().position(|n| n == name) else {
                             continue;
                         };
+                        if !visible[k] {
+                            continue;
+                        }
                         let mean = m.mean_speed_at(name, layout.speed_ratio.get(k).copied());
                         let baseline = |t: f64| {
                             if kind == GroupKind::Speed && about_mean {
@@ -208,7 +195,7 @@ fn time_traces_ui(app: &mut TorsimApp, ui: &mut Ui) {
                                 0.0
                             }
                         };
-                        let p = points(
+                        let d = time_series::series(
                             &m.recording.time_s,
                             &c.values,
                             offset,
@@ -216,19 +203,29 @@ fn time_traces_ui(app: &mut TorsimApp, ui: &mut Ui) {
                             range,
                             buckets,
                         );
-                        plot.line(
-                            Line::new(format!("{name} (measured)"), p)
-                                .color(mode_color(k).gamma_multiply(0.45))
-                                .width(3.0),
-                        );
+                        let label = format!("{name} (measured)");
+                        draw(plot, &label, d, colour(k), Look::Measured);
                     }
                 }
-                for (k, (name, values)) in group.names.iter().zip(&samples.values).enumerate() {
-                    let p = points(&samples.time_s, values, 0.0, &sim_mean(k), range, buckets);
-                    plot.line(Line::new(name.clone(), p).color(mode_color(k)).width(1.2));
+                let series = group.names.iter().zip(&samples.values).enumerate();
+                for (k, (name, values)) in series.filter(|(k, _)| visible[*k]) {
+                    let baseline = sim_mean(k);
+                    let d = time_series::series(
+                        &samples.time_s,
+                        values,
+                        0.0,
+                        &baseline,
+                        range,
+                        buckets,
+                    );
+                    draw(plot, name, d, colour(k), Look::Simulated);
                 }
             });
         }
     });
-    app.traces.drawn = Some(live.generation);
+    if fresh {
+        // The reset plots lay out their axes and legends again in the next frame.
+        ui.ctx().request_repaint();
+    }
+    app.traces.drawn = Some(live.layout.kind);
 }
