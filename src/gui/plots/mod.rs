@@ -3,6 +3,7 @@
 //! failed says why in place and keeps its last good plot. One plot per file.
 
 mod campbell;
+mod colour_scale;
 mod modes;
 mod order_tracks;
 mod recording;
