@@ -67,6 +67,19 @@ pub fn csv_text(data: &PlotData) -> String {
         xs.dedup();
         xs
     };
+    // Each series in x order, with a cursor: linear in the rows, not rows × points.
+    let sorted: Vec<Vec<[f64; 2]>> = data
+        .columns
+        .iter()
+        .map(|(_, p)| {
+            let mut p = p.clone();
+            if !shared {
+                p.sort_by(|a, b| a[0].total_cmp(&b[0]));
+            }
+            p
+        })
+        .collect();
+    let mut cursors = vec![0usize; sorted.len()];
     for (row, &x) in xs.iter().enumerate() {
         let _ = write!(out, "{x}");
         if !data.x_names.is_empty() {
@@ -76,12 +89,15 @@ pub fn csv_text(data: &PlotData) -> String {
             out.push(',');
             out.push_str(&field(name.map_or("", String::as_str)));
         }
-        for (_, points) in &data.columns {
+        for (points, cursor) in sorted.iter().zip(&mut cursors) {
             out.push(',');
             let y = if shared {
                 points.get(row).map(|p| p[1])
             } else {
-                points.iter().find(|p| p[0] == x).map(|p| p[1])
+                while points.get(*cursor).is_some_and(|p| p[0] < x) {
+                    *cursor += 1;
+                }
+                points.get(*cursor).filter(|p| p[0] == x).map(|p| p[1])
             };
             if let Some(y) = y {
                 let _ = write!(out, "{y}");

@@ -7,6 +7,7 @@
 
 use super::spectrogram::SpectrogramSet;
 use super::trace_data::profile_rpm;
+use super::trace_series::relative_name;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 use std::time::SystemTime;
@@ -31,6 +32,9 @@ pub struct RecordingView {
     pub spectrograms: Option<Arc<SpectrogramSet>>,
     /// The simulated run that matches it.
     pub regime: RunKind,
+    /// Relative speed across each rubber stage whose two sides were measured, rpm, named
+    /// as the time traces name it: `(name, samples)`.
+    pub relative: Vec<(String, Vec<f64>)>,
     /// For a person: `"steady 3000 rpm, 4.0 s, stations engine, brake"`.
     pub summary: String,
 }
@@ -109,7 +113,9 @@ impl RecordingCache {
         {
             return Ok(view.clone());
         }
-        let view = Arc::new(read(path, &system.node_names, &options)?);
+        let mut view = read(path, &system.node_names, &options)?;
+        view.relative = relative_speeds(&view.recording, model, system);
+        let view = Arc::new(view);
         self.last = Some((path.to_path_buf(), modified, options, view.clone()));
         Ok(view)
     }
@@ -158,9 +164,34 @@ fn read(path: &Path, nodes: &[String], options: &AnalysisOptions) -> Result<Reco
         spectrograms: SpectrogramSet::new(&analysis, t0_s, max_hz).map(Arc::new),
         analysis,
         regime,
+        relative: Vec::new(),
         summary,
         recording,
     })
+}
+
+/// Seed 001's `n_rel = n_a − n_b` (b referred to a's shaft) across every rubber stage of
+/// `model` whose two sides the recording measured.
+fn relative_speeds(
+    recording: &Recording,
+    model: &Model,
+    system: &System,
+) -> Vec<(String, Vec<f64>)> {
+    let ratio = |node: &str| {
+        let i = system.node_names.iter().position(|n| n == node)?;
+        Some(system.speed_ratio[i].abs())
+    };
+    model
+        .connections
+        .iter()
+        .filter(|c| matches!(c.kind, ConnectionKind::Rubber(_)))
+        .filter_map(|c| {
+            let (a, b) = (recording.speed_rpm(&c.from)?, recording.speed_rpm(&c.to)?);
+            let r = ratio(&c.from)? / ratio(&c.to)?;
+            let values = a.iter().zip(b).map(|(x, y)| x - r * y).collect();
+            Some((relative_name(&c.name, &c.from, &c.to), values))
+        })
+        .collect()
 }
 
 /// The highest frequency worth showing in a run-up's spectrogram: 1.25 × the highest

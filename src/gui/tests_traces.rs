@@ -109,6 +109,24 @@ fn a_run_up_streams_in_and_adds_up_to_the_finished_run() {
     let sim_torque: Vec<Vec<f64>> = sim.torque_nm.iter().map(|(_, v)| v.clone()).collect();
     assert_eq!(torque.values, sim_torque);
     assert!(live.chunks >= 3, "{} chunks", live.chunks);
+    // The CSV export holds every streamed series with its unit, and the reference speed.
+    let data = super::plots::traces_data(app).expect("traces export");
+    let names: Vec<&str> = data.columns.iter().map(|(n, _)| n.as_str()).collect();
+    assert_eq!(names[0], "reference speed engine [rpm]", "{names:?}");
+    assert!(names.contains(&"IAS engine [rpm]"), "{names:?}");
+    assert!(
+        names
+            .iter()
+            .any(|n| n.starts_with("torque ") && n.ends_with("[N·m]"))
+    );
+    assert!(
+        names
+            .iter()
+            .any(|n| n.starts_with("power loss ") && n.ends_with("[W]"))
+    );
+    assert_eq!(data.columns[1].1.len(), sim.time_s.len());
+    let last = data.columns[0].1.last().expect("samples")[1];
+    assert!((last - 6000.0).abs() < 1.0, "ramp ends at {last} rpm");
     // The spectrogram of the run-up is there, one image per station.
     let analysis = app.results.trace_analysis.as_ref().expect("analysis");
     let set = analysis.spectrograms.as_ref().expect("run-up spectrograms");

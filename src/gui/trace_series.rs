@@ -24,6 +24,11 @@ pub struct SeriesBuilder {
     last_time_s: Option<f64>,
 }
 
+/// The name of the relative speed across rubber stage `connection` from node `a` to `b`.
+pub fn relative_name(connection: &str, a: &str, b: &str) -> String {
+    format!("{connection} ({a} - {b})")
+}
+
 /// Is connection `c` of `model` a rubber stage?
 fn is_rubber(model: &Model, c: usize) -> bool {
     model
@@ -84,7 +89,7 @@ impl SeriesBuilder {
             {
                 let ratio = system.speed_ratio[a].abs() / system.speed_ratio[b].abs();
                 pairs.push((a, b, ratio));
-                pair_names.push(format!("{} ({} - {})", c.name, c.from, c.to));
+                pair_names.push(relative_name(&c.name, &c.from, &c.to));
             }
         }
         if !pairs.is_empty() {

@@ -71,8 +71,9 @@ pub struct TraceState {
     pub ias_about_mean: bool,
     /// The kind of run last drawn (another kind resets zoom and legend).
     pub drawn: Option<torsim::transient::RunKind>,
-    /// Generation and station of the order tracks last drawn.
-    pub tracks_drawn: Option<(u64, String)>,
+    /// The orders whose tracks are drawn (default: the engine's main orders, multiples
+    /// of the first number).
+    pub track_orders: Option<(f64, Vec<f64>)>,
 }
 
 impl Default for TraceState {
@@ -95,7 +96,7 @@ impl Default for TraceState {
             shown_view: None,
             ias_about_mean: true,
             drawn: None,
-            tracks_drawn: None,
+            track_orders: None,
         }
     }
 }

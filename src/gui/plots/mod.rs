@@ -5,6 +5,7 @@
 
 mod animation;
 mod campbell;
+mod colour_scale;
 mod crossing;
 mod modes;
 mod order_tracks;
@@ -106,23 +107,47 @@ pub fn plot_data(app: &TorsimApp) -> Option<PlotData> {
     }
 }
 
-/// The time traces as plotted by `traces.rs`: IAS of every node over time. The traces
-/// plot's owner may move this next to the plot (it is the one place to change).
-fn traces_data(app: &TorsimApp) -> Option<PlotData> {
-    let t = app.results.trace.as_ref()?;
+/// The time traces as streamed so far: every series of every group (IAS, relative speed,
+/// torque, power loss, temperature), each column named with its group, series and unit;
+/// a run-up adds the imposed reference speed.
+pub fn traces_data(app: &TorsimApp) -> Option<PlotData> {
+    let live = app.results.live.as_ref()?;
+    let layout = &live.layout;
+    let mut columns = Vec::new();
+    for ((_, group), samples) in layout.groups.iter().zip(&live.groups) {
+        let unit = group
+            .axis
+            .split_once('[')
+            .and_then(|(_, rest)| rest.split_once(']'))
+            .map_or("", |(unit, _)| unit);
+        for (name, values) in group.names.iter().zip(&samples.values) {
+            let points = samples.time_s.iter().zip(values).map(|(&t, &v)| [t, v]);
+            columns.push((format!("{} {name} [{unit}]", group.title), points.collect()));
+        }
+    }
+    if columns
+        .iter()
+        .all(|(_, p): &(String, Vec<[f64; 2]>)| p.is_empty())
+    {
+        return None;
+    }
+    if let Some(first) = live.groups.first()
+        && matches!(layout.kind, torsim::transient::RunKind::Ramp { .. })
+    {
+        let points = first.time_s.iter().map(|&t| [t, layout.speed_at(t)]);
+        columns.insert(
+            0,
+            (
+                format!("reference speed {} [rpm]", layout.reference),
+                points.collect(),
+            ),
+        );
+    }
     Some(PlotData {
-        title: format!("time traces at {:.0} rpm", app.trace_speed_rpm),
+        title: layout.label.clone(),
         x_label: "time [s]".into(),
         x_names: Vec::new(),
-        columns: t
-            .node_names
-            .iter()
-            .zip(&t.speed_rpm)
-            .map(|(name, values)| {
-                let points = t.time_s.iter().zip(values).map(|(&x, &v)| [x, v]);
-                (format!("IAS {name} [rpm]"), points.collect())
-            })
-            .collect(),
+        columns,
     })
 }
 
@@ -141,7 +166,7 @@ pub fn central_ui(app: &mut TorsimApp, ui: &mut Ui) {
             let available = match app.tab {
                 Tab::Campbell | Tab::Modes => app.results.campbell.is_some(),
                 Tab::Response => app.results.response.is_some(),
-                Tab::Traces => app.results.trace.is_some(),
+                Tab::Traces => app.results.live.is_some(),
             };
             let button = ui
                 .add_enabled(available, egui::Button::new("Export CSV…"))

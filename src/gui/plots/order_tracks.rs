@@ -7,36 +7,26 @@ use super::stft::{SCALE_W, SpeedAxis};
 use super::time_series::{self, Look, draw, time_link, visible_range};
 use crate::gui::spectrogram::SpectrogramSet;
 use egui::Ui;
-use egui_plot::{AxisHints, HoverPosition, ItemId, Legend, Plot};
+use egui_plot::{AxisHints, HoverPosition, Legend, Plot};
 use std::sync::Arc;
 use torsim::signal::StationAnalysis;
 
-/// The order tracks of a station over the run-up (rpm 0-peak), the recording's dashed;
-/// orders other than the main ones start hidden (`fresh`: first drawn for this run).
+/// The tracks of the orders `shown` of a station over the run-up (rpm 0-peak), the
+/// recording's dashed.
 pub fn order_tracks_ui(
     ui: &mut Ui,
     set: &Arc<SpectrogramSet>,
     axis: &SpeedAxis,
     station: Option<&StationAnalysis>,
     other: Option<(Arc<SpectrogramSet>, &StationAnalysis)>,
-    major: f64,
-    fresh: bool,
+    shown: &[f64],
 ) {
     let Some(tracks) = station.and_then(|s| s.stft.as_ref()) else {
         return;
     };
-    let hidden: Vec<ItemId> = set
-        .orders
-        .iter()
-        .filter(|q| (*q / major - (*q / major).round()).abs() > 1e-9)
-        .map(|q| ItemId::new(format!("order {q}")))
-        .collect();
     let speed_axis = axis.clone();
     let hover_axis = axis.clone();
-    let mut legend = Legend::default().follow_insertion_order(true);
-    if fresh {
-        legend = legend.hidden_items(hidden);
-    }
+    let legend = Legend::default().follow_insertion_order(true);
     let label = if other.is_some() {
         "order amplitude [rpm] (0-peak; dashed: measured)"
     } else {
@@ -76,16 +66,17 @@ pub fn order_tracks_ui(
         .show(ui, |plot| {
             let range = visible_range(plot);
             let tracked = set.orders.iter().zip(&tracks.order_tracks_rpm).enumerate();
-            for (k, (q, track)) in tracked.filter(|(_, (q, _))| q.fract() == 0.0) {
+            let shown_tracks = tracked.filter(|(_, (q, _))| shown.contains(q));
+            for (rank, (k, (q, track))) in shown_tracks.enumerate() {
                 let name = format!("order {q}");
                 let d = time_series::series(&set.times_s, track, 0.0, &|_| 0.0, range, 2000);
-                draw(plot, &name, d, mode_color(k), Look::Simulated);
+                draw(plot, &name, d, mode_color(rank), Look::Simulated);
                 let Some((o_set, o)) = &other else {
                     continue;
                 };
                 if let Some(track) = o.stft.as_ref().and_then(|s| s.order_tracks_rpm.get(k)) {
                     let d = time_series::series(&o_set.times_s, track, 0.0, &|_| 0.0, range, 2000);
-                    draw(plot, &name, d, mode_color(k), Look::Dashed);
+                    draw(plot, &name, d, mode_color(rank), Look::Dashed);
                 }
             }
         });

@@ -22,6 +22,15 @@ pub fn dominant(orders: &[OrderAmplitude]) -> Option<(f64, f64)> {
         .map(|o| (o.order, o.amplitude))
 }
 
+/// `v` with `decimals` decimals, without a minus sign on a value that rounds to zero.
+fn fixed(v: f64, decimals: usize) -> String {
+    let text = format!("{v:.decimals$}");
+    match text.strip_prefix('-') {
+        Some(rest) if rest.chars().all(|c| c == '0' || c == '.') => rest.to_string(),
+        _ => text,
+    }
+}
+
 fn find<'a>(a: &'a Analysis, name: &str) -> Option<&'a StationAnalysis> {
     a.stations.iter().chain(&a.n_rel).find(|s| s.name == name)
 }
@@ -84,7 +93,7 @@ pub fn orders_ui(app: &mut TorsimApp, ui: &mut Ui) {
                 orders.first().copied().unwrap_or(1.0)
             };
         }
-        ui.horizontal(|ui| {
+        ui.horizontal_wrapped(|ui| {
             let l = ui.label("order");
             egui::ComboBox::from_id_salt("track-order")
                 .selected_text(format!("{}", app.traces.track_order))
@@ -229,9 +238,9 @@ fn summary_ui(ui: &mut Ui, sim: &Analysis, meas: Option<&Analysis>, shown: &[Str
                     None => cell(s, f),
                 };
                 ui.label(name);
-                ui.label(pair(&|s| format!("{:.1}", s.mean_speed_rpm)));
-                ui.label(pair(&|s| format!("{:.3}", s.rms_rpm)));
-                ui.label(pair(&|s| format!("{:.3}", s.irregularity_pct)));
+                ui.label(pair(&|s| fixed(s.mean_speed_rpm, 1)));
+                ui.label(pair(&|s| fixed(s.rms_rpm, 3)));
+                ui.label(pair(&|s| fixed(s.irregularity_pct, 3)));
                 if !ramp {
                     let text = match meas {
                         Some(_) => format!(

@@ -10,7 +10,7 @@ use egui::{DragValue, Ui};
 /// Mode and parameters; any change asks for a new run.
 pub fn controls_ui(app: &mut TorsimApp, ui: &mut Ui) {
     let mut changed = false;
-    ui.horizontal(|ui| {
+    ui.horizontal_wrapped(|ui| {
         let t = &mut app.traces;
         let before = t.mode;
         ui.selectable_value(&mut t.mode, TraceMode::Steady, "Steady run");
@@ -113,7 +113,7 @@ pub fn status_ui(app: &mut TorsimApp, ui: &mut Ui) {
             s.cycles, s.time_s, sim.steps.0
         )
     });
-    ui.horizontal(|ui| {
+    ui.horizontal_wrapped(|ui| {
         if running {
             let stage = if progress < 0.1 { " (settling)" } else { "" };
             ui.add(
@@ -141,7 +141,7 @@ pub fn recording_ui(app: &mut TorsimApp, ui: &mut Ui) {
         return;
     };
     let mut close = false;
-    ui.horizontal(|ui| {
+    ui.horizontal_wrapped(|ui| {
         let file = path.file_name().map_or_else(
             || path.display().to_string(),
             |f| f.to_string_lossy().into(),
@@ -179,7 +179,7 @@ pub fn view_ui(app: &mut TorsimApp, ui: &mut Ui) {
         .recording
         .as_ref()
         .is_some_and(|r| r.spectrograms.is_some());
-    ui.horizontal(|ui| {
+    ui.horizontal_wrapped(|ui| {
         let t = &mut app.traces;
         ui.selectable_value(&mut t.view, TraceView::Traces, "Traces");
         ui.add_enabled_ui(ramp || measured_ramp, |ui| {

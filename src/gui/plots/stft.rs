@@ -4,12 +4,12 @@
 //! and the model's natural frequencies over it, a colour scale in dB re 1 rpm; below it
 //! the order tracks of that station, the recording's dashed when one is open.
 
-use super::order_tracks;
 use super::time_series::{self, time_link};
+use super::{colour_scale, order_tracks};
 use crate::gui::app::TorsimApp;
-use crate::gui::spectrogram::{RANGE_DB, SpectrogramSet, colour};
+use crate::gui::spectrogram::SpectrogramSet;
 use crate::gui::trace_data::profile_rpm;
-use egui::{Align2, Color32, Rect, Sense, Stroke, Ui, Vec2};
+use egui::{Align2, Color32, Ui, Vec2};
 use egui_plot::{
     AxisHints, HLine, HoverPosition, Line, LineStyle, Plot, PlotImage, PlotPoint, Text,
 };
@@ -60,7 +60,7 @@ pub fn spectrogram_ui(app: &mut TorsimApp, ui: &mut Ui) {
             names.first().cloned().unwrap_or_default()
         };
     }
-    ui.horizontal(|ui| {
+    ui.horizontal_wrapped(|ui| {
         let l = ui.label("station");
         egui::ComboBox::from_id_salt("stft-station")
             .selected_text(app.traces.station.clone())
@@ -76,6 +76,34 @@ pub fn spectrogram_ui(app: &mut TorsimApp, ui: &mut Ui) {
             ui.selectable_value(&mut app.traces.measured_stft, false, "simulated");
             ui.selectable_value(&mut app.traces.measured_stft, true, "measured");
         }
+        ui.separator();
+        // The tracks drawn below: the main orders unless chosen.
+        let major = major_order_step(app);
+        if app
+            .traces
+            .track_orders
+            .as_ref()
+            .is_none_or(|(m, _)| *m != major)
+        {
+            let main = set.orders.iter().copied();
+            let main = main.filter(|q| (q / major - (q / major).round()).abs() < 1e-9);
+            app.traces.track_orders = Some((major, main.collect()));
+        }
+        let Some((_, tracks)) = app.traces.track_orders.as_mut() else {
+            return;
+        };
+        ui.menu_button(format!("order tracks ({})", tracks.len()), |ui| {
+            for &q in &set.orders {
+                let mut on = tracks.contains(&q);
+                if ui.checkbox(&mut on, format!("order {q}")).changed() {
+                    tracks.retain(|x| *x != q);
+                    if on {
+                        tracks.push(q);
+                        tracks.sort_by(f64::total_cmp);
+                    }
+                }
+            }
+        });
         ui.weak("0.1 s Hann windows, amplitude 0-peak");
     });
     let Some(index) = names.iter().position(|n| *n == app.traces.station) else {
@@ -215,17 +243,17 @@ pub fn spectrogram_ui(app: &mut TorsimApp, ui: &mut Ui) {
                     );
                 }
             });
-        colour_scale_ui(ui, image.db_range, height);
+        colour_scale::colour_scale_ui(ui, image.db_range, height, SCALE_W);
     });
     let station = find(analysis, &app.traces.station);
     let other = other.and_then(|(set, a)| Some((set, find(a, &app.traces.station)?)));
-    let key = (app.results.generation, app.traces.station.clone());
-    let fresh = app.traces.tracks_drawn.as_ref() != Some(&key);
-    order_tracks::order_tracks_ui(ui, &set, &axis, station, other, major, fresh);
-    if fresh {
-        ui.ctx().request_repaint();
-    }
-    app.traces.tracks_drawn = Some(key);
+    let shown = app
+        .traces
+        .track_orders
+        .as_ref()
+        .map(|(_, t)| t.clone())
+        .unwrap_or_default();
+    order_tracks::order_tracks_ui(ui, &set, &axis, station, other, &shown);
 }
 
 /// The reference speed along a run-up's time axis: the imposed (or fitted) ramp when
@@ -274,49 +302,4 @@ fn major_order_step(app: &TorsimApp) -> f64 {
 /// A station or relative speed of an analysis by name.
 fn find<'a>(a: &'a Analysis, name: &str) -> Option<&'a StationAnalysis> {
     a.stations.iter().chain(&a.n_rel).find(|s| s.name == name)
-}
-
-/// The colour scale: the map from bottom to top with labels every 10 dB.
-fn colour_scale_ui(ui: &mut Ui, [bottom, top]: [f64; 2], height: f32) {
-    let (rect, _) = ui.allocate_exact_size(Vec2::new(SCALE_W, height), Sense::hover());
-    let painter = ui.painter_at(rect);
-    let bar = Rect::from_min_max(
-        rect.min + Vec2::new(6.0, 22.0),
-        rect.min + Vec2::new(22.0, height - 30.0),
-    );
-    let steps = 64;
-    for i in 0..steps {
-        let u0 = i as f32 / steps as f32;
-        let u1 = (i + 1) as f32 / steps as f32;
-        let r = Rect::from_x_y_ranges(
-            bar.x_range(),
-            bar.bottom() - u1 * bar.height()..=bar.bottom() - u0 * bar.height(),
-        );
-        painter.rect_filled(r, 0.0, colour(f64::from(u0 + 0.5 / steps as f32)));
-    }
-    let text = ui.visuals().text_color();
-    let font = egui::TextStyle::Small.resolve(ui.style());
-    painter.text(
-        rect.min + Vec2::new(2.0, 2.0),
-        Align2::LEFT_TOP,
-        "dB re 1 rpm",
-        font.clone(),
-        text,
-    );
-    let mut db = top;
-    while db >= bottom - 1e-9 {
-        let y = bar.bottom() - ((db - bottom) / RANGE_DB) as f32 * bar.height();
-        painter.line_segment(
-            [egui::pos2(bar.right(), y), egui::pos2(bar.right() + 4.0, y)],
-            Stroke::new(1.0, text),
-        );
-        painter.text(
-            egui::pos2(bar.right() + 6.0, y),
-            Align2::LEFT_CENTER,
-            format!("{db:.0}"),
-            font.clone(),
-            text,
-        );
-        db -= 10.0;
-    }
 }

@@ -4,7 +4,7 @@
 
 use crate::gui::decimate::{Decimated, decimate};
 use crate::gui::trace_data::TraceLayout;
-use egui::{Color32, Id, Stroke};
+use egui::{Color32, Id};
 use egui_plot::{FilledArea, GridInput, GridMark, HoverPosition, Line, LineStyle, PlotUi};
 use std::sync::Arc;
 
@@ -89,11 +89,15 @@ pub fn draw(plot: &mut PlotUi<'_>, name: &str, series: Decimated, colour: Color3
             );
         }
         (Decimated::Envelope { time_s, min, max }, Look::Measured | Look::Dashed) => {
-            plot.add(
-                FilledArea::new(name, &time_s, &min, &max)
-                    .fill_color(colour.gamma_multiply(0.12))
-                    .stroke(Stroke::new(1.5, colour.gamma_multiply(0.6))),
-            );
+            // The outline of the envelope: two lines of one name, one legend entry.
+            for edge in [min, max] {
+                let points: Vec<[f64; 2]> = time_s.iter().zip(edge).map(|(&t, v)| [t, v]).collect();
+                plot.line(
+                    Line::new(name, points)
+                        .color(colour.gamma_multiply(0.7))
+                        .width(1.5),
+                );
+            }
         }
     }
 }

@@ -99,7 +99,7 @@ fn time_traces_ui(app: &mut TorsimApp, ui: &mut Ui) {
     // (after an edit) keeps the user's.
     let fresh = app.traces.drawn != Some(kind);
     let shown = shown(app, fresh);
-    ui.horizontal(|ui| {
+    ui.horizontal_wrapped(|ui| {
         ui.checkbox(
             &mut app.traces.ias_about_mean,
             "IAS about each station's mean speed",
@@ -109,7 +109,7 @@ fn time_traces_ui(app: &mut TorsimApp, ui: &mut Ui) {
         ui.label("show");
         series_menus_ui(app, ui);
         ui.separator();
-        ui.weak("drag to pan, scroll or box-zoom (right drag), double-click to reset");
+        ui.weak("drag: pan · ctrl+scroll or right-drag: zoom · double-click: reset");
     });
     let Some(live) = &app.results.live else {
         return;
@@ -173,14 +173,20 @@ fn time_traces_ui(app: &mut TorsimApp, ui: &mut Ui) {
                 // Measured first, under the simulated.
                 if let Some(m) = &measured {
                     let offset = shift_s - m.t0_s;
-                    for c in &m.recording.channels {
-                        let name = match (&c.kind, kind) {
+                    let channels = m.recording.channels.iter().filter_map(|c| {
+                        match (&c.kind, kind) {
                             (ChannelKind::SpeedRpm { node }, GroupKind::Speed)
                             | (ChannelKind::TorqueNm { connection: node }, GroupKind::Torque) => {
-                                node
+                                Some((node, &c.values))
                             }
-                            _ => continue,
-                        };
+                            _ => None,
+                        }
+                    });
+                    let relative = m
+                        .relative
+                        .iter()
+                        .filter(|_| kind == GroupKind::RelativeSpeed);
+                    for (name, values) in channels.chain(relative.map(|(n, v)| (n, v))) {
                         let Some(k) = group.names.iter().position(|n| n == name) else {
                             continue;
                         };
@@ -197,7 +203,7 @@ fn time_traces_ui(app: &mut TorsimApp, ui: &mut Ui) {
                         };
                         let d = time_series::series(
                             &m.recording.time_s,
-                            &c.values,
+                            values,
                             offset,
                             &baseline,
                             range,
