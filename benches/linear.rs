@@ -169,6 +169,7 @@ fn cng_like() -> Model {
             crank_angle_deg,
             pressure_bar,
         }),
+        pressure_scale: None,
     });
     m.load = Some(Load {
         at: Some("generator".into()),

@@ -32,6 +32,10 @@
 //! - [`compare`] — design variants regime by regime: IR per station, power loss per
 //!   rubber stage (seed 001 Tables 9–13).
 //! - [`check`] — the `[expect]` checks that `torsim check` runs on presets.
+//! - [`synth`] — synthetic bench recordings for the diagnosis: the user's model made
+//!   richer by one effect of `spec/diagnosis.md` and plain parameter errors, simulated
+//!   over a campaign (regimes, long run, run-up) and measured like a bench (zebra-tape
+//!   pulses, jitter, wobble, anti-aliasing, noise), with the truth written apart.
 //!
 //! ## Example
 //!
@@ -59,4 +63,5 @@ pub mod physics;
 pub mod recording;
 pub mod response;
 pub mod signal;
+pub mod synth;
 pub mod transient;

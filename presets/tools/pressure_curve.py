@@ -32,6 +32,7 @@ curve (closed integral of p dV over Vd) and the peak pressure, and then the TOML
 Usage:
     python3 presets/tools/pressure_curve.py cng      # CNG genset (seed 000), loads 0.3, 0.6, 1
     python3 presets/tools/pressure_curve.py rig      # 4-cyl. gasoline test-rig engine (seed 001)
+    python3 presets/tools/pressure_curve.py bench    # the same engine at loads 0.3, 0.6, 1
 
 Everything below `ENGINES` is the chosen input; each number's reason is beside it.
 """
@@ -81,6 +82,29 @@ ENGINES = {
         "wiebe_a": 5.0,
         "wiebe_m": 2.0,
         "loads": [
+            {"load": 1.0, "torque": 170.0, "p_int": 0.98, "p_exh": 1.15,
+             "soc": -24.0, "dur": 45.0},
+        ],
+        "evo": 130.0,
+    },
+    # The diagnosis bench (presets/diagnosis-bench.toml): the rig engine above with two
+    # throttled part loads for torsim synth's part-load regimes. Chosen: at 30 % and 60 %
+    # of the full-load torque the throttle holds the intake at 0.38 / 0.64 bar abs, and the
+    # leaner, slower charge starts burning later.
+    "bench": {
+        "cylinders": 4,
+        "bore": 0.082,
+        "crank_radius": 0.045,
+        "conrod": 0.140,
+        "eps": 10.5,
+        "n": 1.33,
+        "wiebe_a": 5.0,
+        "wiebe_m": 2.0,
+        "loads": [
+            {"load": 0.3, "torque": 0.3 * 170.0, "p_int": 0.38, "p_exh": 1.05,
+             "soc": -28.0, "dur": 55.0},
+            {"load": 0.6, "torque": 0.6 * 170.0, "p_int": 0.64, "p_exh": 1.10,
+             "soc": -26.0, "dur": 50.0},
             {"load": 1.0, "torque": 170.0, "p_int": 0.98, "p_exh": 1.15,
              "soc": -24.0, "dur": 45.0},
         ],

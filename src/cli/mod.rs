@@ -14,6 +14,7 @@ mod modes;
 mod progress;
 mod response;
 mod simulate;
+mod synth;
 
 use clap::{Parser, Subcommand};
 use error::CliError;
@@ -21,8 +22,8 @@ use error::CliError;
 /// Torsional vibration of engine drivelines with highly flexible rubber couplings.
 ///
 /// MODEL is a model file (spec/model-format.md) or `preset:NAME` for a preset shipped in
-/// the binary (cng-genset, test-rig-45sh, test-rig-60sh, test-rig-70sh, test-rig-mod1,
-/// test-rig-mod2, test-rig-mod3).
+/// the binary (cng-genset, diagnosis-bench, test-rig-45sh, test-rig-60sh, test-rig-70sh,
+/// test-rig-mod1, test-rig-mod2, test-rig-mod3).
 #[derive(Debug, Parser)]
 #[command(name = "torsim", version, args_conflicts_with_subcommands = true)]
 pub struct Cli {
@@ -78,6 +79,8 @@ pub enum Command {
     Simulate(simulate::SimulateArgs),
     /// Design variants side by side: IR per station and power loss per rubber stage at each regime.
     Compare(compare::CompareArgs),
+    /// Bench-like recordings from a richer model (one effect, parameter errors, noise), the truth apart.
+    Synth(synth::SynthArgs),
     /// Runs the [expect] checks of presets (all of ./presets/ when none named).
     Check {
         /// Model files or preset:NAME.
@@ -133,6 +136,7 @@ pub fn run(cli: Cli) -> Result<(), CliError> {
         Some(Command::Analyse { recording, json }) => analyse::run(&recording, json),
         Some(Command::Simulate(args)) => simulate::run(&args),
         Some(Command::Compare(args)) => compare::run(&args),
+        Some(Command::Synth(args)) => synth::run(&args),
         Some(Command::Coupling {
             model,
             frequency_hz,

@@ -1,5 +1,7 @@
 //! The excitation as written in a model file: `[engine]` (seed 001 eq. 3–5) and
-//! `[[harmonic]]` (`spec/model-format.md`).
+//! `[[harmonic]]` (`spec/model-format.md`), with one extension key: `[engine]
+//! pressure_scale = [f1, f2, …]`, a factor per cylinder on its gauge pressure (cylinder
+//! imbalance; default all 1).
 
 /// A cylinder pressure curve over one working cycle.
 #[derive(Debug, Clone, PartialEq)]
@@ -51,6 +53,12 @@ pub struct Engine {
     pub rod_inertia_correction_kg: f64,
     /// Cylinder gauge pressure.
     pub pressure: Pressure,
+    /// Extension key `pressure_scale`: one factor per cylinder (in cylinder order) on that
+    /// cylinder's whole gauge-pressure curve, e.g. `[1, 1, 0.85, 1]` for a third cylinder
+    /// firing weaker (cylinder imbalance); `None`: every cylinder 1. Each factor ≥ 0. A
+    /// factor scales compression as well as combustion, so a low factor is only a rough
+    /// stand-in for a misfire (which still compresses).
+    pub pressure_scale: Option<Vec<f64>>,
 }
 
 impl Engine {
@@ -69,6 +77,15 @@ impl Engine {
                 (0..self.cylinders).map(|i| f64::from(i) * step).collect()
             }
         }
+    }
+
+    /// The pressure factor of cylinder `cylinder` (0-based): `pressure_scale[cylinder]`,
+    /// or 1 when the model gives none.
+    pub fn pressure_scale_of(&self, cylinder: usize) -> f64 {
+        self.pressure_scale
+            .as_ref()
+            .and_then(|s| s.get(cylinder).copied())
+            .unwrap_or(1.0)
     }
 
     /// The node each cylinder acts on (length `cylinders`).

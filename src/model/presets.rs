@@ -17,6 +17,10 @@ pub const PRESETS: &[Preset] = &[
         text: include_str!("../../presets/cng-genset.toml"),
     },
     Preset {
+        name: "diagnosis-bench",
+        text: include_str!("../../presets/diagnosis-bench.toml"),
+    },
+    Preset {
         name: "test-rig-45sh",
         text: include_str!("../../presets/test-rig-45sh.toml"),
     },

@@ -21,6 +21,7 @@ pub(super) fn engine(t: &Tab) -> Result<Engine, ModelError> {
         "rod_inertia_correction",
         "pressure",
         "pressure_by_load",
+        "pressure_scale",
     ])?;
     let at_item = t.req("at")?;
     let at = match (at_item.as_str(), at_item.as_array()) {
@@ -72,6 +73,7 @@ pub(super) fn engine(t: &Tab) -> Result<Engine, ModelError> {
         reciprocating_mass_kg: t.f64_or("reciprocating_mass", 0.0)?,
         rod_inertia_correction_kg: t.f64_or("rod_inertia_correction", 0.0)?,
         pressure,
+        pressure_scale: t.opt_f64s("pressure_scale")?,
     })
 }
 

@@ -62,6 +62,20 @@ pub(crate) fn engine(model: &Model, e: &Engine) -> Check {
             ),
         )?;
     }
+    if let Some(scale) = &e.pressure_scale {
+        if scale.len() != n {
+            fail(
+                "engine.pressure_scale",
+                format!(
+                    "has {} factors but the engine has {n} cylinders",
+                    scale.len()
+                ),
+            )?;
+        }
+        for (i, f) in scale.iter().enumerate() {
+            non_negative(&format!("engine.pressure_scale[{i}]"), *f)?;
+        }
+    }
     non_negative("engine.reciprocating_mass", e.reciprocating_mass_kg)?;
     non_negative("engine.rod_inertia_correction", e.rod_inertia_correction_kg)?;
     let cycle = e.cycle_deg();

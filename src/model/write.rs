@@ -225,6 +225,9 @@ fn engine(out: &mut String, e: &Engine) {
         e.rod_inertia_correction_kg,
         0.0,
     );
+    if let Some(scale) = &e.pressure_scale {
+        kv(out, "pressure_scale", nums(scale, 0, 17));
+    }
     match &e.pressure {
         Pressure::Single(c) => kv(out, "pressure", inline(&curve(c, 0))),
         Pressure::ByLoad(curves) => {

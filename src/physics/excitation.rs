@@ -4,8 +4,10 @@
 //! `φ̈ = 0`) is sampled and Fourier-transformed once: a gas part independent of speed and
 //! an oscillating-mass part proportional to ω². Cylinder `i` fires `α_i` later, so its
 //! order-q harmonic is cylinder 1's times `e^{−i q α_i}` (eq. 5). `[[harmonic]]` entries
-//! add `amplitude·e^{i·phase}`. A torque `T(θ*) = Re(T̂_q e^{i q θ*})`, θ* the absolute
-//! crank angle, is the convention throughout.
+//! add `amplitude·e^{i·phase}`. A cylinder's `pressure_scale` (extension) multiplies its
+//! gas part and its share of the mean torque; its oscillating-mass part is unchanged.
+//! A torque `T(θ*) = Re(T̂_q e^{i q θ*})`, θ* the absolute crank angle, is the convention
+//! throughout.
 
 use super::engine;
 use super::system::System;
@@ -156,11 +158,12 @@ impl Excitation {
                 let Some((dof, ratio)) = node_dof(engine.node_of_cylinder(cylinder)) else {
                     continue;
                 };
-                excitation.mean_nm[dof] += spectrum.mean_torque_nm() * ratio;
+                let scale = engine.pressure_scale_of(cylinder);
+                excitation.mean_nm[dof] += spectrum.mean_torque_nm() * scale * ratio;
                 for (q, &order) in orders.iter().enumerate() {
                     let (gas, inertia) = spectrum.at_order(order);
                     let phase = Complex64::from_polar(ratio, -order * alpha_deg.to_radians());
-                    excitation.constant[q][dof] += gas * phase;
+                    excitation.constant[q][dof] += gas * scale * phase;
                     excitation.per_speed2[q][dof] += inertia * phase;
                 }
             }

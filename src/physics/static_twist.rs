@@ -19,7 +19,8 @@ pub fn static_connection_torques(model: &Model, system: &System) -> Result<Vec<f
         let per_cylinder = spectrum.mean_torque_nm();
         for cylinder in 0..engine.cylinders as usize {
             if let Some(node) = model.node_index(engine.node_of_cylinder(cylinder)) {
-                torque[system.dof_of_node[node]] += per_cylinder * system.speed_ratio[node];
+                torque[system.dof_of_node[node]] +=
+                    per_cylinder * engine.pressure_scale_of(cylinder) * system.speed_ratio[node];
             }
         }
     }

@@ -138,7 +138,8 @@ impl Plant {
                 let k = (x as usize).min(engine.pressure_pa.len() - 1);
                 let next = engine.pressure_pa[(k + 1) % engine.pressure_pa.len()];
                 let p = engine.pressure_pa[k] + (x - k as f64) * (next - engine.pressure_pa[k]);
-                let torque_own = p * engine.area_m2 * rv - m * speed * speed * ra * rv;
+                let torque_own =
+                    p * c.pressure_scale * engine.area_m2 * rv - m * speed * speed * ra * rv;
                 dy[n + c.dof] += torque_own * c.ratio;
                 mass[c.dof] += m * rv * rv * c.ratio * c.ratio;
             }

@@ -100,6 +100,8 @@ pub struct Cylinder {
     pub firing_rad: f64,
     /// Its sine and cosine.
     pub firing_sin_cos: (f64, f64),
+    /// Factor on its gauge pressure (`[engine] pressure_scale`, default 1).
+    pub pressure_scale: f64,
 }
 
 /// The engine's per-cylinder constants (seed 001 eq. 3–4).
@@ -311,6 +313,7 @@ impl Plant {
                         ratio: system.speed_ratio[node],
                         firing_rad: a.to_radians(),
                         firing_sin_cos: a.to_radians().sin_cos(),
+                        pressure_scale: e.pressure_scale_of(c),
                     })
                 })
                 .collect();
@@ -325,7 +328,10 @@ impl Plant {
                 oscillating_mass_kg: engine::oscillating_mass_kg(e),
                 cycle_rad,
                 pressure_pa,
-                mean_torque_nm: cylinders.iter().map(|c| per_cylinder * c.ratio).sum(),
+                mean_torque_nm: cylinders
+                    .iter()
+                    .map(|c| per_cylinder * c.pressure_scale * c.ratio)
+                    .sum(),
                 cylinders,
             }
         });

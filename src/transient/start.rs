@@ -19,7 +19,7 @@ pub fn initial_state(plant: &Plant) -> Result<Vec<f64>, TransientError> {
             .as_ref()
             .map_or(0.0, |s| s.mean_torque_nm());
         for c in &engine.cylinders {
-            torque[c.dof] += per_cylinder * c.ratio;
+            torque[c.dof] += per_cylinder * c.pressure_scale * c.ratio;
         }
     }
     if torque.iter().any(|t| *t != 0.0) {

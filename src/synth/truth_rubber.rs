@@ -1,0 +1,223 @@
+//! Effects on a rubber coupling stage (seed 000): amplitude nonlinearity (eq. 1),
+//! frequency dependence (eq. 9) and self-heating with temperature softening (eq. 10–11);
+//! each takes `connection=<name>`, by default the first rubber stage. Hysteretic damping in
+//! place of the user's viscous equivalent is in [`super::truth_hysteretic`].
+
+use super::SynthError;
+use super::effect::{EffectSpec, Params};
+use super::truth::{Applied, mode_frequencies_hz};
+use crate::model::{
+    ConnectionKind, Model, Poly, RubberElements, RubberStage, RubberStiffness, Thermal,
+};
+
+/// Seed 000 eq. 1: α_x(x) = 0.0152 x² + 0.0033 x + 1, x in mm.
+pub const SEED_AMPLITUDE_POLY: [f64; 3] = [0.0152, 0.0033, 1.0];
+/// Seed 000 eq. 9: α_f(f) = −0.000023 f² + 0.01519 f + 1, f in Hz (measured 50–300 Hz).
+pub const SEED_FREQUENCY_POLY: [f64; 3] = [-0.000023, 0.01519, 1.0];
+/// Seed 000 eq. 10: α_Tc(T), T in °C (measured 25–55 °C).
+pub const SEED_TEMPERATURE_STIFFNESS_POLY: [f64; 3] = [0.000187, -0.02565, 1.530];
+/// Seed 000 eq. 11: α_Tξ(T), T in °C (measured 25–55 °C).
+pub const SEED_TEMPERATURE_DAMPING_POLY: [f64; 3] = [0.000063, -0.01275, 1.281];
+
+/// Index of the rubber stage `connection` names (default: the first rubber stage).
+fn stage_index(model: &Model, p: &mut Params) -> Result<usize, SynthError> {
+    let first = model
+        .connections
+        .iter()
+        .find(|c| matches!(c.kind, ConnectionKind::Rubber(_)))
+        .map(|c| c.name.clone());
+    let name = p.text("connection", first)?;
+    model
+        .connections
+        .iter()
+        .position(|c| c.name == name && matches!(c.kind, ConnectionKind::Rubber(_)))
+        .ok_or_else(|| {
+            p.bad(
+                "connection",
+                format!("`{name}` is no rubber stage of the model"),
+            )
+        })
+}
+
+/// The rubber stage of connection `j` (found by [`stage_index`]).
+fn stage_mut(model: &mut Model, j: usize) -> Result<&mut RubberStage, SynthError> {
+    let name = model.connections[j].name.clone();
+    match &mut model.connections[j].kind {
+        ConnectionKind::Rubber(r) => Ok(r),
+        _ => Err(SynthError::Input(format!(
+            "connection `{name}` is no rubber stage"
+        ))),
+    }
+}
+
+/// `coupling_amplitude_nonlinearity`: α_x(x) = a2·x² + a1·x + 1 (default seed 000 eq. 1).
+/// A stage given by `stiffness` is first written as 8 elements, 4 per side, on pitch
+/// diameter `pitch_diameter_m` (default 0.2 m) with the same static stiffness.
+pub(crate) fn amplitude(model: &mut Model, spec: &EffectSpec) -> Result<Applied, SynthError> {
+    let mut p = Params::new(spec, &["connection", "a2", "a1", "pitch_diameter_m"])?;
+    let j = stage_index(model, &mut p)?;
+    let a2 = p.number("a2", SEED_AMPLITUDE_POLY[0], 0.0, 1.0)?;
+    let a1 = p.number("a1", SEED_AMPLITUDE_POLY[1], -0.5, 0.5)?;
+    let direct = match &stage_mut(model, j)?.stiffness {
+        RubberStiffness::Direct(k) => Some(*k),
+        RubberStiffness::Elements(_) => None,
+    };
+    if direct.is_none() && spec.params.contains_key("pitch_diameter_m") {
+        return Err(p.bad("pitch_diameter_m", "the stage already has elements"));
+    }
+    if let Some(k) = direct {
+        let d = p.number("pitch_diameter_m", 0.2, 0.02, 5.0)?;
+        let mut e = RubberElements {
+            count: 8,
+            per_side: 4,
+            pitch_diameter_m: d,
+            radial_stiffness_n_per_m: 1.0,
+        };
+        e.radial_stiffness_n_per_m = k / e.torsional_stiffness_nm_per_rad();
+        stage_mut(model, j)?.stiffness = RubberStiffness::Elements(e);
+    }
+    let stage = stage_mut(model, j)?;
+    if stage.amplitude_poly.is_some() {
+        return Err(p.bad("connection", "the stage already has amplitude_poly"));
+    }
+    stage.amplitude_poly = Some(Poly {
+        coeffs: [a2, a1, 1.0],
+        range: None,
+    });
+    let name = &model.connections[j].name;
+    let summary = format!(
+        "rubber stage `{name}` stiffens with the element deformation x (mm): \
+         α_x = {a2}·x² + {a1}·x + 1 (seed 000 eq. 1 form)"
+    );
+    Ok((p.resolved, summary))
+}
+
+/// `coupling_frequency_dependence`: the truth's α_f is seed 000 eq. 9 scaled by `scale`
+/// (default 0.1) about `reference_hz`, where it equals the user's stiffness (default: the
+/// user model's first mode, the frequency a user would have tuned the stiffness to):
+/// `α_f(f) = 1 + scale·(g(f) − g(f_ref))`, g eq. 9, held beyond its measured 300 Hz.
+pub(crate) fn frequency(
+    model: &mut Model,
+    user: &Model,
+    spec: &EffectSpec,
+) -> Result<Applied, SynthError> {
+    let mut p = Params::new(spec, &["connection", "scale", "reference_hz"])?;
+    let j = stage_index(model, &mut p)?;
+    let scale = p.number("scale", 0.1, 0.0, 1.0)?;
+    let first_mode = mode_frequencies_hz(user)?.first().copied().unwrap_or(50.0);
+    let f_ref = p.number("reference_hz", first_mode.min(300.0), 0.0, 300.0)?;
+    let [b2, b1, b0] = SEED_FREQUENCY_POLY;
+    let g_ref = (b2 * f_ref + b1) * f_ref + b0;
+    let coeffs = [scale * b2, scale * b1, 1.0 + scale * (b0 - g_ref)];
+    if coeffs[2] <= 0.0 {
+        return Err(p.bad("scale", "makes the static stiffness ≤ 0"));
+    }
+    let stage = stage_mut(model, j)?;
+    if stage.frequency_poly.is_some() {
+        return Err(p.bad("connection", "the stage already has frequency_poly"));
+    }
+    stage.frequency_poly = Some(Poly {
+        coeffs,
+        range: Some([0.0, 300.0]),
+    });
+    let at = |f: f64| (coeffs[0] * f + coeffs[1]) * f + coeffs[2];
+    let summary = format!(
+        "rubber stage `{}` stiffens with frequency: α_f = {:.4} at 0 Hz, 1 at {f_ref:.1} Hz, \
+         {:.4} at 100 Hz, {:.4} from 300 Hz (seed 000 eq. 9 × {scale})",
+        model.connections[j].name,
+        at(0.0),
+        at(100.0),
+        at(300.0)
+    );
+    Ok((p.resolved, summary))
+}
+
+/// A seed 000 temperature law moved so that `t0_c` sits where 40 °C (the middle of the
+/// measured 25–55 °C) sits in the seed's, normalised to 1 there, valid ±15 K around it.
+fn shifted_law(seed: [f64; 3], t0_c: f64) -> Poly {
+    let [a2, a1, a0] = seed;
+    let d = t0_c - 40.0;
+    let at40 = (a2 * 40.0 + a1) * 40.0 + a0;
+    Poly {
+        coeffs: [
+            a2 / at40,
+            (a1 - 2.0 * a2 * d) / at40,
+            (a2 * d * d - a1 * d + a0) / at40,
+        ],
+        range: Some([t0_c - 15.0, t0_c + 15.0]),
+    }
+}
+
+/// `coupling_thermal_drift`: the stage warms by its own loss into a lumped heat capacity
+/// (`capacity_j_per_k`, default 300 J/K: about 0.17 kg of loaded rubber) and cools to
+/// `ambient_c` (default its start temperature) through `conductance_w_per_k` (default
+/// 1.5 W/K; time constant 200 s). A stage without temperature laws gets seed 000 eq.
+/// 10–11 by [`shifted_law`]: −1.33 %/K in stiffness and −0.88 %/K in damping at the start.
+pub(crate) fn thermal(model: &mut Model, spec: &EffectSpec) -> Result<Applied, SynthError> {
+    let mut p = Params::new(
+        spec,
+        &[
+            "connection",
+            "capacity_j_per_k",
+            "conductance_w_per_k",
+            "ambient_c",
+        ],
+    )?;
+    let j = stage_index(model, &mut p)?;
+    let capacity = p.number("capacity_j_per_k", 300.0, 1.0, 1.0e7)?;
+    let conductance = p.number("conductance_w_per_k", 1.5, 1.0e-3, 1.0e5)?;
+    let t0 = stage_mut(model, j)?.temperature_c;
+    let ambient = p.number("ambient_c", t0, -40.0, 200.0)?;
+    let stage = stage_mut(model, j)?;
+    if stage.thermal.is_some() {
+        return Err(p.bad("connection", "the stage already has thermal"));
+    }
+    stage.thermal = Some(Thermal {
+        capacity_j_per_k: capacity,
+        conductance_w_per_k: conductance,
+        ambient_c: ambient,
+    });
+    let mut added = Vec::new();
+    if stage.temperature_stiffness_poly.is_none() {
+        stage.temperature_stiffness_poly = Some(shifted_law(SEED_TEMPERATURE_STIFFNESS_POLY, t0));
+        added.push("α_Tc");
+    }
+    if stage.temperature_damping_poly.is_none() {
+        stage.temperature_damping_poly = Some(shifted_law(SEED_TEMPERATURE_DAMPING_POLY, t0));
+        added.push("α_Tξ");
+    }
+    let laws = if added.is_empty() {
+        "its own temperature laws".to_string()
+    } else {
+        format!(
+            "{} of seed 000 eq. 10–11 centred on {t0} °C",
+            added.join(" and ")
+        )
+    };
+    let summary = format!(
+        "rubber stage `{}` warms by its power loss (heat capacity {capacity} J/K, \
+         {conductance} W/K to {ambient} °C, time constant {:.0} s) from {t0} °C and softens \
+         by {laws}",
+        model.connections[j].name,
+        capacity / conductance
+    );
+    Ok((p.resolved, summary))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn shifted_law_is_one_at_the_start_and_keeps_the_slope() {
+        let law = shifted_law(SEED_TEMPERATURE_STIFFNESS_POLY, 60.0);
+        assert!((law.eval(60.0) - 1.0).abs() < 1e-12);
+        // The seed's slope at 40 °C over its value there: −1.331 %/K.
+        let slope = law.derivative(60.0);
+        assert!((slope + 0.013_31).abs() < 1e-4, "{slope}");
+        let [a2, a1, a0] = SEED_TEMPERATURE_STIFFNESS_POLY;
+        let seed = |t: f64| (a2 * t + a1) * t + a0;
+        assert!((law.eval(70.0) - seed(50.0) / seed(40.0)).abs() < 1e-12);
+        assert_eq!(law.range, Some([45.0, 75.0]));
+    }
+}
