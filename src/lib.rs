@@ -31,6 +31,8 @@
 //!   Dormand–Prince integration; steady runs settled cycle by cycle, and run-ups.
 //! - [`compare`] — design variants regime by regime: IR per station, power loss per
 //!   rubber stage (seed 001 Tables 9–13).
+//! - [`diagnose`] — where a model and bench recordings disagree, the physics the model
+//!   left out (`spec/diagnosis.md`), fitted and validated on held-out recordings.
 //! - [`check`] — the `[expect]` checks that `torsim check` runs on presets.
 //! - [`synth`] — synthetic bench recordings for the diagnosis: the user's model made
 //!   richer by one effect of `spec/diagnosis.md` and plain parameter errors, simulated
@@ -57,6 +59,7 @@
 
 pub mod check;
 pub mod compare;
+pub mod diagnose;
 pub mod modal;
 pub mod model;
 pub mod physics;

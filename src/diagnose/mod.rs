@@ -1,0 +1,81 @@
+//! Diagnosis (`spec/diagnosis.md`): where a model and bench recordings disagree, which
+//! physics the model left out, that physics modelled and fitted, and the fit shown to
+//! improve on recordings the fit did not use — or `none` / `parameter_error` when that is
+//! the truth.
+//!
+//! The steps, one file each:
+//! - `observe`: the measured side. Every recording through the order analysis of
+//!   [`crate::signal`]: order amplitudes per station of every steady regime, of the time
+//!   blocks of a long run, and of the speed bins of a run-up, each with its noise.
+//! - `forward`: the same quantities predicted by a model: the nonlinear time domain of
+//!   [`crate::transient`] run at each recording's regime and analysed the same way, so
+//!   measured and simulated meet on equal terms.
+//! - `candidates`: the effects of the spec's table as model extensions with few
+//!   parameters (they are the effects [`crate::synth`] can add), each with its signature.
+//! - `fit`: Levenberg–Marquardt on the effect's parameters together with the scale
+//!   factors of the plain parameters they could be confused with.
+//! - `decide`: held-out scoring with a parameter penalty and the verdict.
+//! - [`report`]: the JSON of the spec; `html` the page for a person.
+
+pub mod report;
+
+pub use report::Report;
+
+use crate::model::Model;
+use crate::recording::Recording;
+
+/// A recording to diagnose with its label (sidecar `label`, else the file stem).
+#[derive(Debug, Clone)]
+pub struct LabelledRecording {
+    /// For a person and for the report: `"Regime A"`.
+    pub label: String,
+    /// The recording.
+    pub recording: Recording,
+}
+
+/// Settings of [`diagnose`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct DiagnoseOptions {
+    /// Worker threads for the simulations (default: the machine's cores, at most 8).
+    pub threads: usize,
+    /// Highest engine order compared (default 8).
+    pub max_order: f64,
+}
+
+impl Default for DiagnoseOptions {
+    fn default() -> Self {
+        Self {
+            threads: std::thread::available_parallelism()
+                .map_or(2, |n| n.get())
+                .min(8),
+            max_order: 8.0,
+        }
+    }
+}
+
+/// Why a diagnosis could not be made.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum DiagnoseError {
+    /// The inputs do not fit together (a station that is no node, no recordings, …).
+    #[error("{0}")]
+    Input(String),
+    /// A recording could not be analysed.
+    #[error("recording `{label}`: {message}")]
+    Analysis {
+        /// Its label.
+        label: String,
+        /// What went wrong.
+        message: String,
+    },
+    /// A simulation of the user's model failed.
+    #[error("simulating `{label}`: {message}")]
+    Simulation {
+        /// The recording simulated.
+        label: String,
+        /// What went wrong.
+        message: String,
+    },
+    /// The caller cancelled.
+    #[error("cancelled")]
+    Cancelled,
+}
