@@ -17,11 +17,24 @@
 //! - `decide`: held-out scoring with a parameter penalty and the verdict.
 //! - [`report`]: the JSON of the spec; `html` the page for a person.
 
+pub mod candidates;
+pub mod decide;
+pub mod fit;
+pub mod forward;
+pub mod holdout;
+pub mod observe;
+pub mod observe_runup;
 pub mod report;
+pub mod report_parts;
+pub mod residual;
+pub mod run;
+pub mod sensor;
+pub mod spread;
+pub mod surrogate;
 
 pub use report::Report;
+pub use run::diagnose;
 
-use crate::model::Model;
 use crate::recording::Recording;
 
 /// A recording to diagnose with its label (sidecar `label`, else the file stem).

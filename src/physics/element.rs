@@ -24,6 +24,18 @@ pub enum ElementLaw {
         /// Loss factor `ξ_T = ψ/2π·α_Tξ`.
         loss_factor: f64,
     },
+    /// A rubber stage as the time domain represents it: the same base stiffness times
+    /// the complex stiffness of a causal generalized Maxwell chain
+    /// (`k∞ + Σ k_j·iωτ_j/(1 + iωτ_j)`, relative; [`crate::transient::maxwell`]), so
+    /// that a linear model can stand in for the time domain (the diagnosis' surrogate).
+    Causal {
+        /// As for [`ElementLaw::Rubber`], N·m/rad.
+        base_stiffness_nm_per_rad: f64,
+        /// `k∞`, relative.
+        equilibrium: f64,
+        /// Arms `(k_j, τ_j)`: relative stiffness and relaxation time, s.
+        arms: Vec<(f64, f64)>,
+    },
 }
 
 /// A spring (and damper) between two degrees of freedom, or one and the frame.
@@ -61,6 +73,18 @@ impl Element {
                     .map_or(1.0, |p| p.eval(frequency_hz));
                 (base_stiffness_nm_per_rad * alpha_f, *loss_factor)
             }
+            ElementLaw::Causal {
+                base_stiffness_nm_per_rad,
+                equilibrium,
+                arms,
+            } => {
+                let omega = std::f64::consts::TAU * frequency_hz;
+                let (re, im) = arms.iter().fold((*equilibrium, 0.0), |(re, im), (k, tau)| {
+                    let x = omega * tau;
+                    (re + k * x * x / (1.0 + x * x), im + k * x / (1.0 + x * x))
+                });
+                (base_stiffness_nm_per_rad * re, im / re.max(1e-12))
+            }
         }
     }
 
@@ -71,7 +95,7 @@ impl Element {
                 damping_nm_s_per_rad,
                 ..
             } => *damping_nm_s_per_rad,
-            ElementLaw::Rubber { .. } => 0.0,
+            ElementLaw::Rubber { .. } | ElementLaw::Causal { .. } => 0.0,
         }
     }
 
@@ -82,7 +106,7 @@ impl Element {
             ElementLaw::Rubber {
                 frequency_poly: Some(_),
                 ..
-            }
+            } | ElementLaw::Causal { .. }
         )
     }
 }

@@ -109,7 +109,7 @@ pub fn animation_ui(
         // Labels of neighbouring springs at two heights, so long names do not overlap.
         let stagger = if n.is_multiple_of(2) { 0.0 } else { -26.0 };
         let stroke = Stroke::new(1.5 + 4.0 * share as f32, heat(share / largest));
-        let zigzag = matches!(e.law, ElementLaw::Rubber { .. });
+        let zigzag = matches!(e.law, ElementLaw::Rubber { .. } | ElementLaw::Causal { .. });
         let ends = (
             e.from_dof.and_then(node_of_dof),
             e.to_dof.and_then(node_of_dof),

@@ -1,0 +1,181 @@
+//! The candidate effects: each effect of `spec/diagnosis.md` as a model extension with one
+//! fitted parameter, built by the same code that [`crate::synth`] uses to add it, and the
+//! places in the model where it can sit (every rubber stage, every gear, every cylinder,
+//! every station).
+//!
+//! | effect | where | fitted | start |
+//! |---|---|---|---|
+//! | `coupling_amplitude_nonlinearity` | rubber stage | `a2` of seed 000 eq. 1 (per mm²) | 0.0152 |
+//! | `coupling_frequency_dependence` | rubber stage | `scale` of seed 000 eq. 9 | 0.1 |
+//! | `coupling_thermal_drift` | rubber stage, with a long run | `capacity_j_per_k` (eq. 10–11) | 300 |
+//! | `hysteretic_damping` | spring with a viscous damper | `reference_hz` where ψ matches | 50 |
+//! | `unmodelled_mode` | rubber stage or shaft | `inertia_kg_m2` of a middle flange | ¼ lightest node |
+//! | `crank_variable_inertia` | engine without reciprocating mass | `mass_kg` per cylinder | 1100 kg/m³·bore³ |
+//! | `gear_backlash` | gear with mesh stiffness | `backlash_deg` | 0.05 |
+//! | `cylinder_imbalance` | each cylinder | `pressure_scale` | 0.95 |
+//! | `sensor_artifact` | each station | tape `joint_fraction` | 0.02 |
+
+use super::sensor::TapeJoint;
+use crate::model::{ConnectionKind, Model};
+use crate::synth::{Effect, EffectSpec, build_truth};
+
+/// A fitted parameter: its key, start, bounds and whether it is fitted in log.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Param {
+    /// The effect's key (`a2`, `backlash_deg`, …).
+    pub key: &'static str,
+    /// Start value.
+    pub start: f64,
+    /// Lower bound.
+    pub lo: f64,
+    /// Upper bound.
+    pub hi: f64,
+    /// Fitted as its logarithm (positive scale-like values).
+    pub log: bool,
+}
+
+/// One candidate: an effect at one place, with one fitted parameter.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Candidate {
+    /// The effect.
+    pub effect: Effect,
+    /// Fixed keys: where it sits (`connection`, `station`, `cylinder`, …).
+    pub fixed: Vec<(&'static str, String)>,
+    /// The fitted parameter.
+    pub param: Param,
+}
+
+impl Candidate {
+    /// `"gear_backlash at gearbox"`.
+    pub fn name(&self) -> String {
+        match self.fixed.first() {
+            Some((_, v)) => format!("{} at {v}", self.effect),
+            None => self.effect.to_string(),
+        }
+    }
+
+    /// The model (and the tape joint of a sensor artifact) with the effect at `value`.
+    pub fn apply(&self, model: &Model, value: f64) -> Result<(Model, Option<TapeJoint>), String> {
+        if self.effect == Effect::SensorArtifact {
+            let station = self.fixed.first().map(|(_, s)| s.clone()).unwrap_or_default();
+            let joint = TapeJoint {
+                station,
+                joint_fraction: value,
+            };
+            return Ok((model.clone(), Some(joint)));
+        }
+        let mut spec = EffectSpec::new(self.effect);
+        for (k, v) in &self.fixed {
+            spec = spec.with(k, v);
+        }
+        spec = spec.with(self.param.key, value);
+        let truth = build_truth(model, &spec, 0.0, 0).map_err(|e| e.to_string())?;
+        Ok((truth.model, None))
+    }
+}
+
+fn param(key: &'static str, start: f64, lo: f64, hi: f64, log: bool) -> Param {
+    Param {
+        key,
+        start,
+        lo,
+        hi,
+        log,
+    }
+}
+
+/// Every candidate the model has a place for. `stations`: the measured nodes;
+/// `long_run`: whether a long run was recorded (thermal drift shows nowhere else).
+pub fn candidates(model: &Model, stations: &[String], long_run: bool) -> Vec<Candidate> {
+    let mut out = Vec::new();
+    let lightest = model
+        .inertias
+        .iter()
+        .map(|n| n.inertia_kg_m2)
+        .fold(f64::INFINITY, f64::min);
+    for c in &model.connections {
+        let at = || vec![("connection", c.name.clone())];
+        match &c.kind {
+            ConnectionKind::Rubber(_) => {
+                let add = |effect, p| Candidate {
+                    effect,
+                    fixed: at(),
+                    param: p,
+                };
+                out.push(add(
+                    Effect::CouplingAmplitudeNonlinearity,
+                    param("a2", 0.0152, 0.0, 0.5, false),
+                ));
+                out.push(add(
+                    Effect::CouplingFrequencyDependence,
+                    param("scale", 0.1, 0.0, 1.0, false),
+                ));
+                if long_run {
+                    out.push(add(
+                        Effect::CouplingThermalDrift,
+                        param("capacity_j_per_k", 300.0, 10.0, 1.0e5, true),
+                    ));
+                }
+                out.push(add(
+                    Effect::UnmodelledMode,
+                    param("inertia_kg_m2", 0.25 * lightest, 1e-3 * lightest, 10.0 * lightest, true),
+                ));
+            }
+            ConnectionKind::Shaft(s) => {
+                if s.damping_nm_s_per_rad > 0.0 {
+                    out.push(Candidate {
+                        effect: Effect::HystereticDamping,
+                        fixed: at(),
+                        param: param("reference_hz", 50.0, 1.0, 2000.0, true),
+                    });
+                }
+            }
+            ConnectionKind::Gear(g) => {
+                if g.mesh_stiffness_nm_per_rad.is_some() {
+                    out.push(Candidate {
+                        effect: Effect::GearBacklash,
+                        fixed: at(),
+                        param: param("backlash_deg", 0.05, 0.002, 2.0, true),
+                    });
+                }
+            }
+        }
+    }
+    if let Some(e) = &model.engine {
+        if e.reciprocating_mass_kg == 0.0 && e.rod_inertia_correction_kg == 0.0 {
+            let stand_ins: Vec<String> = model
+                .harmonics
+                .iter()
+                .filter(|h| e.at.contains(&h.at))
+                .map(|h| format!("{}", h.order))
+                .collect();
+            let mut fixed = Vec::new();
+            if !stand_ins.is_empty() {
+                let mut orders = stand_ins;
+                orders.dedup();
+                fixed.push(("drop_harmonics", orders.join(",")));
+            }
+            let start = 1100.0 * e.bore_m.powi(3);
+            out.push(Candidate {
+                effect: Effect::CrankVariableInertia,
+                fixed,
+                param: param("mass_kg", start, 0.02 * start, 20.0 * start, true),
+            });
+        }
+        for cyl in 1..=e.cylinders {
+            out.push(Candidate {
+                effect: Effect::CylinderImbalance,
+                fixed: vec![("cylinder", cyl.to_string())],
+                param: param("pressure_scale", 0.95, 0.3, 1.5, false),
+            });
+        }
+    }
+    for s in stations {
+        out.push(Candidate {
+            effect: Effect::SensorArtifact,
+            fixed: vec![("station", s.clone())],
+            param: param("joint_fraction", 0.02, -0.5, 0.5, false),
+        });
+    }
+    out
+}

@@ -1,0 +1,217 @@
+//! The honest decision and the report.
+//!
+//! Score of a model (lower is better): its χ² per amplitude on the held-out observations,
+//! plus the BIC-like penalty `k·ln(n)/n` of its `k` fitted parameters on `n` fitted
+//! amplitudes. Then:
+//! - `none` when the user's model already fits the held-out data within the noise
+//!   (χ²/N ≤ [`NONE_CHI2`]);
+//! - an effect when its score beats the plain-parameter fit's by [`EFFECT_MARGIN`]
+//!   (relative) — new physics must earn its place on data the fit did not see;
+//! - otherwise `parameter_error`, naming the plain parameter the fit moved most.
+
+use super::candidates::Candidate;
+use super::holdout::{held_out_labels, roles};
+use super::observe::Regime;
+use super::report::*;
+use super::run::{Context, Evaluated};
+use std::collections::BTreeMap;
+
+/// Held-out χ²/N under which the user's model is taken to fit.
+pub const NONE_CHI2: f64 = 2.0;
+/// An effect must lower the plain fit's score by this fraction.
+pub const EFFECT_MARGIN: f64 = 0.25;
+
+fn number(x: f64) -> ParameterValue {
+    ParameterValue::Number(x)
+}
+
+/// The report of a finished diagnosis.
+pub fn report(
+    cx: &Context,
+    baseline: &Evaluated,
+    plain: &Evaluated,
+    fitted: &[(Candidate, Evaluated)],
+    single: Option<(usize, f64, f64)>,
+    elapsed_s: f64,
+) -> Report {
+    let n_fit = cx.held_out.iter().filter(|h| !**h).count().max(1) as f64;
+    let penalty = |k: usize| k as f64 * n_fit.ln() / n_fit;
+    let k_plain = cx.plain.len();
+    let before = cx.chi2(baseline, true);
+    let plain_score = cx.chi2(plain, true) + penalty(k_plain);
+    let mut candidates: Vec<Candidate_> = Vec::new();
+    let plain_params: BTreeMap<String, ParameterValue> = cx
+        .plain
+        .iter()
+        .zip(&plain.factors)
+        .map(|(p, f)| (format!("scale.{}", p.name), number(*f)))
+        .collect();
+    for (c, e) in fitted {
+        let mut parameters = plain_params.clone();
+        for (k, v) in &c.fixed {
+            parameters.insert((*k).to_string(), ParameterValue::Text(v.clone()));
+        }
+        if let Some(v) = e.value {
+            parameters.insert(c.param.key.to_string(), number(v));
+        }
+        for (p, f) in cx.plain.iter().zip(&e.factors) {
+            parameters.insert(format!("scale.{}", p.name), number(*f));
+        }
+        candidates.push(Candidate_ {
+            name: c.name(),
+            out: super::report::Candidate {
+                effect: c.effect.to_string(),
+                parameters,
+                score: cx.chi2(e, true) + penalty(k_plain + 1),
+                residual_before: before,
+                residual_after: cx.chi2(e, true),
+                residual_fitted: cx.chi2(e, false),
+                parameter_count: k_plain + 1,
+                signature: c.name(),
+            },
+            evaluated: e,
+        });
+    }
+    // Keep the best place of each effect.
+    candidates.sort_by(|a, b| a.out.score.total_cmp(&b.out.score));
+    let mut seen = Vec::new();
+    candidates.retain(|c| {
+        let new = !seen.contains(&c.out.effect);
+        seen.push(c.out.effect.clone());
+        new
+    });
+    let plain_row = super::report::Candidate {
+        effect: "parameter_error".into(),
+        parameters: plain_params.clone(),
+        score: plain_score,
+        residual_before: before,
+        residual_after: cx.chi2(plain, true),
+        residual_fitted: cx.chi2(plain, false),
+        parameter_count: k_plain,
+        signature: "plain parameters only".into(),
+    };
+    let none_row = super::report::Candidate {
+        effect: "none".into(),
+        parameters: BTreeMap::new(),
+        score: before,
+        residual_before: before,
+        residual_after: before,
+        residual_fitted: cx.chi2(baseline, false),
+        parameter_count: 0,
+        signature: "the user's model as it is".into(),
+    };
+    let best = candidates.first();
+    let (verdict, after_model): (Verdict, &Evaluated) = if before <= NONE_CHI2 {
+        (
+            Verdict {
+                effect: "none".into(),
+                confidence: (1.0 - before / NONE_CHI2).clamp(0.0, 1.0),
+                parameters: BTreeMap::new(),
+                explanation: format!(
+                    "The model fits the held-out recordings within their noise (χ²/N = {before:.2}); \
+                     nothing is missing and no parameter needs changing."
+                ),
+            },
+            baseline,
+        )
+    } else if let Some(b) = best.filter(|b| b.out.score < (1.0 - EFFECT_MARGIN) * plain_score) {
+        let mut parameters = BTreeMap::new();
+        for (k, v) in &b.out.parameters {
+            if !k.starts_with("scale.") {
+                parameters.insert(k.clone(), v.clone());
+            }
+        }
+        let runner_up = candidates.get(1).map_or(plain_score, |c| c.out.score.min(plain_score));
+        (
+            Verdict {
+                effect: b.out.effect.clone(),
+                confidence: (1.0 - b.out.score / runner_up).clamp(0.0, 1.0),
+                parameters,
+                explanation: format!(
+                    "The model misses {}: with it ({}), fitted together with the plain \
+                     parameters, the held-out χ²/N falls from {before:.2} to {:.2}, against \
+                     {:.2} for the plain parameters alone.",
+                    b.out.effect,
+                    b.name,
+                    b.out.residual_after,
+                    cx.chi2(plain, true)
+                ),
+            },
+            b.evaluated,
+        )
+    } else {
+        // Name the parameter that alone explains the most (fitted by itself); its value
+        // from the joint fit of all plain parameters when that one failed.
+        let (i, f) = match single {
+            Some((i, f, _)) => (i, f),
+            None => plain
+                .factors
+                .iter()
+                .enumerate()
+                .max_by(|a, b| a.1.ln().abs().total_cmp(&b.1.ln().abs()))
+                .map_or((0, 1.0), |(i, f)| (i, *f)),
+        };
+        let name = cx.plain.get(i).map_or(String::new(), |p| p.name.clone());
+        let user_value = super::surrogate::value_of(cx.user, &name);
+        let mut parameters = BTreeMap::new();
+        parameters.insert("parameter".into(), ParameterValue::Text(name.clone()));
+        parameters.insert("factor".into(), number(f));
+        if let Some(v) = user_value {
+            parameters.insert("user_value".into(), number(v));
+            parameters.insert("fitted_value".into(), number(v * f));
+        }
+        let second = candidates.first().map_or(f64::INFINITY, |c| c.out.score);
+        (
+            Verdict {
+                effect: "parameter_error".into(),
+                confidence: (1.0 - plain_score / second).clamp(0.0, 1.0),
+                parameters,
+                explanation: format!(
+                    "No physics is missing: recalibrating the plain parameters brings the \
+                     held-out χ²/N from {before:.2} to {:.2}, and no effect does clearly \
+                     better. The parameter that alone explains most is {name}: × {f:.3} of \
+                     the user's value.",
+                    cx.chi2(plain, true)
+                ),
+            },
+            plain,
+        )
+    };
+    let mut rows: Vec<super::report::Candidate> = candidates.iter().map(|c| c.out.clone()).collect();
+    rows.push(plain_row);
+    rows.push(none_row);
+    rows.sort_by(|a, b| a.score.total_cmp(&b.score));
+    if let Some(i) = rows.iter().position(|r| r.effect == verdict.effect) {
+        let r = rows.remove(i);
+        rows.insert(0, r);
+    }
+    let after = cx.chi2(after_model, true);
+    super::report_parts::assemble(cx, baseline, after_model, verdict, rows, before, after, elapsed_s)
+}
+
+/// A candidate row with its name and evaluation.
+struct Candidate_<'a> {
+    name: String,
+    out: super::report::Candidate,
+    evaluated: &'a Evaluated,
+}
+
+/// The label of a run's kind for the report.
+pub fn kind_label(regime: &Regime) -> &'static str {
+    match regime {
+        Regime::Steady { .. } => "steady",
+        Regime::LongRun { .. } => "long run",
+        Regime::RunUp { .. } => "run-up",
+    }
+}
+
+/// Held-out labels (re-exported for the report parts).
+pub fn validated_on(cx: &Context) -> Vec<String> {
+    held_out_labels(&cx.observed, &cx.held_out)
+}
+
+/// Roles of the runs.
+pub fn run_roles(cx: &Context) -> Vec<String> {
+    roles(&cx.observed, &cx.held_out)
+}
+

@@ -1,0 +1,425 @@
+//! The measured side of a diagnosis: every recording through the order analysis of
+//! [`crate::signal`], as a list of order amplitudes ([`Observation`]), each with its noise.
+//!
+//! - A steady regime gives the synchronously averaged order amplitudes of each station.
+//! - A long steady run (at least [`LONG_RUN_S`]) is cut into [`LONG_RUN_BLOCKS`] time
+//!   blocks, each analysed like a regime: the drift of the amplitudes over the run.
+//! - A run-up gives its STFT order tracks, averaged in speed bins of [`BIN_RPM`].
+//!
+//! Noise: a steady amplitude's σ is the scatter of the same amplitude over [`PARTS`]
+//! quarters of the record, divided by √PARTS, pooled over the orders of the station (white
+//! noise is the same at every order). A run-up bin's σ comes from that pooled sample noise
+//! through the STFT window's length and the windows averaged.
+
+use super::DiagnoseError;
+use super::LabelledRecording;
+use crate::recording::{Recording, RunKind};
+use crate::signal::{Analysis, AnalysisOptions, analyse_with};
+
+/// A steady run at least this long is a long run, s.
+pub const LONG_RUN_S: f64 = 8.0;
+/// Time blocks of a long run.
+pub const LONG_RUN_BLOCKS: usize = 4;
+/// Speed bin of a run-up, rpm.
+pub const BIN_RPM: f64 = 100.0;
+/// Parts of a record whose scatter gives the noise.
+const PARTS: usize = 4;
+/// Smallest noise assumed for an amplitude, rpm: the recordings' resolution.
+const MIN_SIGMA_RPM: f64 = 1e-4;
+
+/// How a recording is compared.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Regime {
+    /// A steady regime at the measured mean speed, rpm.
+    Steady {
+        /// Mean reference speed, rpm.
+        speed_rpm: f64,
+    },
+    /// A long steady run in [`LONG_RUN_BLOCKS`] time blocks.
+    LongRun {
+        /// Mean reference speed, rpm.
+        speed_rpm: f64,
+    },
+    /// A run-up (or run-down) along the measured ramp.
+    RunUp {
+        /// Reference speed at the first sample, rpm.
+        from_rpm: f64,
+        /// Reference speed at the last sample, rpm.
+        to_rpm: f64,
+    },
+}
+
+/// A recording as the diagnosis sees it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Run {
+    /// Label.
+    pub label: String,
+    /// How it is compared.
+    pub regime: Regime,
+    /// Engine load 0..1.
+    pub load: f64,
+    /// Recorded duration, s.
+    pub duration_s: f64,
+    /// Sample rate, Hz.
+    pub rate_hz: f64,
+    /// Reference node.
+    pub reference: String,
+    /// Speed stations (nodes), in column order.
+    pub stations: Vec<String>,
+    /// Run-ups: the measured STFT window speeds, rpm (the bins follow them).
+    pub window_speeds_rpm: Vec<f64>,
+    /// Run-ups: the measured STFT window centres, s.
+    pub window_times_s: Vec<f64>,
+    /// Lines per revolution of each station's tape or encoder (sidecar `sensors`), if
+    /// known.
+    pub lines_per_rev: Vec<Option<u32>>,
+    /// Steady runs: the mean reference speed of each working cycle, per part (one part,
+    /// or the blocks of a long run), rpm — the bench's slow wobble of the mean speed.
+    pub cycle_speeds_rpm: Vec<Vec<f64>>,
+}
+
+/// One compared amplitude.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Observation {
+    /// Index of its [`Run`].
+    pub run: usize,
+    /// Long runs: the time block; run-ups: the speed bin; steady: 0.
+    pub part: usize,
+    /// Station (node).
+    pub station: String,
+    /// Engine order.
+    pub order: f64,
+    /// Mean reference speed, rpm.
+    pub speed_rpm: f64,
+    /// Middle of the time block, s (long runs), else the record's middle.
+    pub time_s: f64,
+    /// Measured amplitude, rpm zero-to-peak.
+    pub measured_rpm: f64,
+    /// Its noise, rpm (one σ).
+    pub sigma_rpm: f64,
+}
+
+/// Every recording analysed.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Observed {
+    /// The runs, in the order given.
+    pub runs: Vec<Run>,
+    /// The amplitudes.
+    pub observations: Vec<Observation>,
+    /// Sample noise per station and run, rpm (`[run][station]`), for the report.
+    pub sample_noise_rpm: Vec<Vec<f64>>,
+}
+
+/// The analysis options of a diagnosis: no relative speeds, orders up to `max_order`.
+pub fn analysis_options(max_order: f64) -> AnalysisOptions {
+    AnalysisOptions {
+        max_order,
+        track_max_order: max_order,
+        pairs: Some(Vec::new()),
+        ..AnalysisOptions::default()
+    }
+}
+
+/// The samples of `recording` from `from_s` to `to_s` (relative to its first sample).
+pub fn slice(recording: &Recording, from_s: f64, to_s: f64) -> Recording {
+    let t0 = recording.time_s.first().copied().unwrap_or(0.0);
+    let lo = recording.time_s.partition_point(|t| t - t0 < from_s);
+    let hi = recording.time_s.partition_point(|t| t - t0 < to_s);
+    let mut out = recording.clone();
+    out.time_s = recording.time_s[lo..hi].to_vec();
+    for c in &mut out.channels {
+        c.values = c.values[lo..hi].to_vec();
+    }
+    out
+}
+
+/// Duration of a recording, s.
+pub fn duration_s(recording: &Recording) -> f64 {
+    match (recording.time_s.first(), recording.time_s.last()) {
+        (Some(a), Some(b)) if recording.time_s.len() > 1 => {
+            (b - a) * recording.time_s.len() as f64 / (recording.time_s.len() - 1) as f64
+        }
+        _ => 0.0,
+    }
+}
+
+/// Analyses every recording.
+pub fn observe(
+    recordings: &[LabelledRecording],
+    max_order: f64,
+) -> Result<Observed, DiagnoseError> {
+    let options = analysis_options(max_order);
+    let mut observed = Observed {
+        runs: Vec::new(),
+        observations: Vec::new(),
+        sample_noise_rpm: Vec::new(),
+    };
+    for (i, lr) in recordings.iter().enumerate() {
+        let fail = |message: String| DiagnoseError::Analysis {
+            label: lr.label.clone(),
+            message,
+        };
+        let rec = &lr.recording;
+        let analysis = analyse_with(rec, &options).map_err(|e| fail(e.to_string()))?;
+        let duration = duration_s(rec);
+        let rate_hz = match (rec.time_s.first(), rec.time_s.last()) {
+            (Some(a), Some(b)) if b > a => (rec.time_s.len() - 1) as f64 / (b - a),
+            _ => return Err(fail("fewer than two samples".into())),
+        };
+        let stations: Vec<String> = analysis.stations.iter().map(|s| s.name.clone()).collect();
+        let reference_speed = analysis
+            .stations
+            .iter()
+            .find(|s| s.name == analysis.reference)
+            .map_or(0.0, |s| s.mean_speed_rpm);
+        let mut run = Run {
+            label: lr.label.clone(),
+            regime: Regime::Steady {
+                speed_rpm: reference_speed,
+            },
+            load: rec.meta.load,
+            duration_s: duration,
+            rate_hz,
+            reference: analysis.reference.clone(),
+            stations: stations.clone(),
+            window_speeds_rpm: Vec::new(),
+            window_times_s: Vec::new(),
+            lines_per_rev: stations
+                .iter()
+                .map(|s| rec.meta.sensors.get(s).and_then(|x| x.lines_per_rev))
+                .collect(),
+            cycle_speeds_rpm: Vec::new(),
+        };
+        let noise = match analysis.kind {
+            RunKind::Steady if duration >= LONG_RUN_S => {
+                run.regime = Regime::LongRun {
+                    speed_rpm: reference_speed,
+                };
+                let block = duration / LONG_RUN_BLOCKS as f64;
+                run.cycle_speeds_rpm = (0..LONG_RUN_BLOCKS)
+                    .map(|b| {
+                        let part = slice(rec, b as f64 * block, (b + 1) as f64 * block);
+                        cycle_speeds(&part, &analysis.reference, analysis.cycle_rev)
+                    })
+                    .collect();
+                long_run(&mut observed, i, rec, duration, &options).map_err(fail)?
+            }
+            RunKind::Steady => {
+                run.cycle_speeds_rpm =
+                    vec![cycle_speeds(rec, &analysis.reference, analysis.cycle_rev)];
+                let noise = steady_noise(rec, duration, &options, &stations).map_err(fail)?;
+                push_steady(&mut observed, i, 0, &analysis, &noise, duration / 2.0);
+                noise
+                    .iter()
+                    .zip(&analysis.stations)
+                    .map(|(s, _)| sample_noise(*s, rec.time_s.len()))
+                    .collect()
+            }
+            RunKind::RunUp => {
+                let t0 = rec.time_s.first().copied().unwrap_or(0.0);
+                let (from, to, speeds) = ramp_of(&analysis, t0, duration).map_err(fail)?;
+                run.window_times_s = analysis.stft.as_ref().map_or(Vec::new(), |s| s.times_s.clone());
+                run.regime = Regime::RunUp {
+                    from_rpm: from,
+                    to_rpm: to,
+                };
+                run.window_speeds_rpm = speeds;
+                Vec::new()
+            }
+        };
+        observed.runs.push(run);
+        observed.sample_noise_rpm.push(noise);
+    }
+    // Run-ups take the sample noise of the steady runs (median per station).
+    for i in 0..observed.runs.len() {
+        if !matches!(observed.runs[i].regime, Regime::RunUp { .. }) {
+            continue;
+        }
+        let analysis = analyse_with(&recordings[i].recording, &options).map_err(|e| {
+            DiagnoseError::Analysis {
+                label: recordings[i].label.clone(),
+                message: e.to_string(),
+            }
+        })?;
+        let noise: Vec<f64> = observed.runs[i]
+            .stations
+            .iter()
+            .map(|s| median_noise(&observed, s))
+            .collect();
+        super::observe_runup::push_run_up(&mut observed, i, &analysis, &noise);
+        observed.sample_noise_rpm[i] = noise;
+    }
+    Ok(observed)
+}
+
+/// The mean reference speed of each whole working cycle of `rec` (`cycle_rev`
+/// revolutions), rpm.
+pub fn cycle_speeds(rec: &Recording, reference: &str, cycle_rev: f64) -> Vec<f64> {
+    let Some(speed) = rec.speed_rpm(reference) else {
+        return Vec::new();
+    };
+    let mut out = Vec::new();
+    let (mut angle_rev, mut sum, mut count) = (0.0, 0.0, 0usize);
+    for (k, v) in speed.iter().enumerate() {
+        let dt = match (rec.time_s.get(k), rec.time_s.get(k + 1)) {
+            (Some(a), Some(b)) => b - a,
+            _ => break,
+        };
+        angle_rev += v / 60.0 * dt;
+        sum += v;
+        count += 1;
+        if angle_rev >= cycle_rev {
+            out.push(sum / count as f64);
+            angle_rev -= cycle_rev;
+            sum = 0.0;
+            count = 0;
+        }
+    }
+    out
+}
+
+/// The median sample noise of `station` over the steady runs (0.1 rpm when none has it).
+fn median_noise(observed: &Observed, station: &str) -> f64 {
+    let mut values: Vec<f64> = observed
+        .runs
+        .iter()
+        .zip(&observed.sample_noise_rpm)
+        .filter_map(|(r, n)| n.get(r.stations.iter().position(|s| s == station)?).copied())
+        .filter(|x| x.is_finite() && *x > 0.0)
+        .collect();
+    values.sort_by(f64::total_cmp);
+    values.get(values.len() / 2).copied().unwrap_or(0.1)
+}
+
+/// Sample noise (rpm per sample) from an amplitude σ of a record of `samples` samples:
+/// σ_amp = σ_n √(2/N).
+fn sample_noise(sigma_amplitude: f64, samples: usize) -> f64 {
+    sigma_amplitude * (samples as f64 / 2.0).sqrt()
+}
+
+/// Pushes the order amplitudes of every station of a steady `analysis`.
+fn push_steady(
+    observed: &mut Observed,
+    run: usize,
+    part: usize,
+    analysis: &Analysis,
+    noise: &[f64],
+    time_s: f64,
+) {
+    let speed = analysis
+        .stations
+        .iter()
+        .find(|s| s.name == analysis.reference)
+        .map_or(0.0, |s| s.mean_speed_rpm);
+    for (station, sigma) in analysis.stations.iter().zip(noise) {
+        for o in station.orders.iter().filter(|o| o.order > 0.0) {
+            observed.observations.push(Observation {
+                run,
+                part,
+                station: station.name.clone(),
+                order: o.order,
+                speed_rpm: speed,
+                time_s,
+                measured_rpm: o.amplitude,
+                sigma_rpm: sigma.max(MIN_SIGMA_RPM),
+            });
+        }
+    }
+}
+
+/// σ of each station's order amplitudes from the scatter over [`PARTS`] parts.
+fn steady_noise(
+    rec: &Recording,
+    duration: f64,
+    options: &AnalysisOptions,
+    stations: &[String],
+) -> Result<Vec<f64>, String> {
+    let parts: Vec<Analysis> = (0..PARTS)
+        .map(|k| {
+            let (a, b) = (
+                duration * k as f64 / PARTS as f64,
+                duration * (k + 1) as f64 / PARTS as f64,
+            );
+            analyse_with(&slice(rec, a, b), options).map_err(|e| e.to_string())
+        })
+        .collect::<Result<_, _>>()?;
+    let whole = analyse_with(rec, options).map_err(|e| e.to_string())?;
+    Ok(stations
+        .iter()
+        .enumerate()
+        .map(|(s, _)| {
+            let Some(first) = parts[0].stations.get(s) else {
+                return f64::NAN;
+            };
+            // E[a_k²] = A² + 2s² for each part; the whole record's A_w² = A² + 2s²/P. So
+            // 2s²(1 − 1/P) = mean(a_k²) − A_w² for every order; the median over the orders
+            // resists the large orders, whose parts differ by more than noise (the wobble).
+            // s is the per-component noise of one part, s/√P that of the whole record.
+            let mut excess: Vec<f64> = Vec::new();
+            for (k, o) in first.orders.iter().enumerate().filter(|(_, o)| o.order > 0.0) {
+                let xs: Vec<f64> = parts
+                    .iter()
+                    .filter_map(|p| p.stations.get(s)?.orders.get(k))
+                    .filter(|x| x.order == o.order)
+                    .map(|x| x.amplitude)
+                    .collect();
+                let whole = whole
+                    .stations
+                    .get(s)
+                    .and_then(|w| w.orders.iter().find(|x| x.order == o.order));
+                if let (true, Some(w)) = (xs.len() == PARTS, whole) {
+                    let mean_sq = xs.iter().map(|x| x * x).sum::<f64>() / PARTS as f64;
+                    excess.push(mean_sq - w.amplitude * w.amplitude);
+                }
+            }
+            excess.sort_by(f64::total_cmp);
+            let median = excess.get(excess.len() / 2).copied().unwrap_or(0.0);
+            let s_part_sq = median.max(0.0) / (2.0 * (1.0 - 1.0 / PARTS as f64));
+            (s_part_sq / PARTS as f64).sqrt()
+        })
+        .collect())
+}
+
+/// The blocks of a long run; returns the sample noise per station.
+fn long_run(
+    observed: &mut Observed,
+    run: usize,
+    rec: &Recording,
+    duration: f64,
+    options: &AnalysisOptions,
+) -> Result<Vec<f64>, String> {
+    let block = duration / LONG_RUN_BLOCKS as f64;
+    let mut noise_sum: Vec<f64> = Vec::new();
+    for b in 0..LONG_RUN_BLOCKS {
+        let part = slice(rec, b as f64 * block, (b + 1) as f64 * block);
+        let analysis = analyse_with(&part, options).map_err(|e| e.to_string())?;
+        let stations: Vec<String> = analysis.stations.iter().map(|s| s.name.clone()).collect();
+        let noise = steady_noise(&part, block, options, &stations)?;
+        push_steady(observed, run, b, &analysis, &noise, (b as f64 + 0.5) * block);
+        noise_sum.resize(noise.len(), 0.0);
+        for (acc, s) in noise_sum.iter_mut().zip(&noise) {
+            *acc += sample_noise(*s, part.time_s.len()) / LONG_RUN_BLOCKS as f64;
+        }
+    }
+    Ok(noise_sum)
+}
+
+/// The measured ramp of a run-up: speed at the first and last sample (a straight line
+/// fitted to the STFT window speeds) and the window speeds.
+fn ramp_of(analysis: &Analysis, t0_s: f64, duration: f64) -> Result<(f64, f64, Vec<f64>), String> {
+    let stft = analysis
+        .stft
+        .as_ref()
+        .ok_or_else(|| "a run-up without its STFT".to_string())?;
+    let (t, v) = (&stft.times_s, &stft.speeds_rpm);
+    let n = t.len() as f64;
+    if t.len() < 2 {
+        return Err("a run-up shorter than two STFT windows".into());
+    }
+    let (mt, mv) = (t.iter().sum::<f64>() / n, v.iter().sum::<f64>() / n);
+    let sxy: f64 = t.iter().zip(v).map(|(a, b)| (a - mt) * (b - mv)).sum();
+    let sxx: f64 = t.iter().map(|a| (a - mt).powi(2)).sum();
+    let slope = sxy / sxx;
+    let at = |x: f64| mv + slope * (x - mt);
+    Ok((at(t0_s), at(t0_s + duration), v.clone()))
+}

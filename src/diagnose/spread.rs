@@ -1,0 +1,84 @@
+//! The bench's slow wobble of the mean speed, carried to the simulated amplitudes.
+//!
+//! A steady regime on a bench is not quite steady: the mean speed drifts by a few tenths
+//! of a percent within the record. Near a resonance an order's amplitude changes by
+//! several percent per ten rpm, and the synchronous average of the record averages the
+//! amplitude over the speeds it went through, not its value at the mean speed. The
+//! simulation runs at the mean speed; this factor, from the linear frequency-domain
+//! model ([`crate::response`]), scales it to the mean over the measured cycle speeds:
+//! `mean_c A(n_c) / A(n̄)`.
+
+use super::observe::{Observed, Regime};
+use crate::model::Model;
+use super::surrogate::{causal_system, run_speeds};
+use crate::physics::Excitation;
+use crate::response::forced_response;
+
+/// Most cycle speeds evaluated per record (quantiles of the measured ones).
+const MAX_SPEEDS: usize = 24;
+/// The factor stays within `[1/LIMIT, LIMIT]`.
+const LIMIT: f64 = 1.5;
+
+/// `n` quantiles of `values` (sorted copy), or all of them when fewer.
+fn quantiles(values: &[f64], n: usize) -> Vec<f64> {
+    let mut v: Vec<f64> = values.iter().copied().filter(|x| x.is_finite()).collect();
+    v.sort_by(f64::total_cmp);
+    if v.len() <= n {
+        return v;
+    }
+    (0..n)
+        .map(|k| v[((k as f64 + 0.5) / n as f64 * v.len() as f64) as usize])
+        .collect()
+}
+
+/// Per observation: the factor from the amplitude at the mean speed to its mean over the
+/// measured cycle speeds (1 for run-ups, and where the linear model cannot be built).
+pub fn spread_factors(model: &Model, observed: &Observed) -> Vec<f64> {
+    let mut factors = vec![1.0; observed.observations.len()];
+    for (r, run) in observed.runs.iter().enumerate() {
+        let mean = match run.regime {
+            Regime::Steady { speed_rpm } | Regime::LongRun { speed_rpm } => speed_rpm,
+            Regime::RunUp { .. } => continue,
+        };
+        let Some(system) = causal_system(model, run.load, run_speeds(observed, r)) else {
+            continue;
+        };
+        let mut orders: Vec<f64> = observed
+            .observations
+            .iter()
+            .filter(|o| o.run == r)
+            .map(|o| o.order)
+            .collect();
+        orders.sort_by(f64::total_cmp);
+        orders.dedup();
+        let excitation = Excitation::new(model, &system, run.load, &orders);
+        for (part, cycles) in run.cycle_speeds_rpm.iter().enumerate() {
+            let mut speeds = vec![mean];
+            speeds.extend(quantiles(cycles, MAX_SPEEDS));
+            if speeds.len() < 2 {
+                continue;
+            }
+            let Ok(response) = forced_response(&system, &excitation, &speeds) else {
+                continue;
+            };
+            for (i, o) in observed.observations.iter().enumerate() {
+                if o.run != r || o.part != part {
+                    continue;
+                }
+                let node = system.node_names.iter().position(|n| *n == o.station);
+                let q = orders.iter().position(|x| (x - o.order).abs() < 1e-9);
+                let (Some(node), Some(q)) = (node, q) else {
+                    continue;
+                };
+                let a = &response.ias_amplitude_rpm[node][q];
+                let at_mean = a[0];
+                let largest = a.iter().fold(0.0_f64, |m, x| m.max(*x));
+                if at_mean > 1e-6 * largest.max(1e-12) && at_mean > 1e-9 {
+                    let spread = a[1..].iter().sum::<f64>() / (a.len() - 1) as f64;
+                    factors[i] = (spread / at_mean).clamp(1.0 / LIMIT, LIMIT);
+                }
+            }
+        }
+    }
+    factors
+}
