@@ -17,11 +17,15 @@
 //! - `decide`: held-out scoring with a parameter penalty and the verdict.
 //! - [`report`]: the JSON of the spec; `html` the page for a person.
 
+pub mod html;
 pub mod report;
+mod run;
+pub mod svg;
 
+pub use html::report_html;
 pub use report::Report;
+pub use run::diagnose;
 
-use crate::model::Model;
 use crate::recording::Recording;
 
 /// A recording to diagnose with its label (sidecar `label`, else the file stem).
