@@ -191,8 +191,8 @@ fn overlays(out: &mut String, report: &Report) {
     }
     out.push_str("<p>Measured order amplitude (points, ±σ bars), your model (dashed) and the verdict's fitted model (solid).</p>\n<div class=\"figures\">");
     let after = match report.verdict.effect.as_str() {
-        "none" => "your model (nothing to add)".to_string(),
-        effect => format!("{effect} fitted"),
+        "none" => "after: your model (nothing added)",
+        _ => "after: fitted model",
     };
     for o in &report.overlays {
         let _ = write!(
@@ -201,7 +201,7 @@ fn overlays(out: &mut String, report: &Report) {
             escape(&o.recording),
             escape(&o.station),
             escape(&o.order),
-            plot::overlay_svg(o, &after)
+            plot::overlay_svg(o, after)
         );
     }
     out.push_str("</div>\n");

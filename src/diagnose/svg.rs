@@ -37,9 +37,9 @@ pub fn sig(value: f64, digits: usize) -> String {
     clean_zero(format!("{value:.decimals$}"))
 }
 
-/// A speed in rpm: whole when it is (within 0.05 rpm), else to 0.1 rpm; `—` when not
-/// finite.
-pub fn rpm(value: f64) -> String {
+/// `value` to 0.1 (a speed in rpm, a load in %), without the `.0` when whole; `—` when
+/// not finite.
+pub fn tenth(value: f64) -> String {
     if !value.is_finite() {
         "—".into()
     } else if (value - value.round()).abs() < 0.05 {
@@ -355,9 +355,9 @@ mod tests {
         assert_eq!(sig(f64::NAN, 3), "—");
         assert_eq!(sig(2.5e-7, 2), "2.5e-7");
         assert_eq!(sig(-0.0004, 1), "-0.0004");
-        assert_eq!(rpm(2999.98), "3000");
-        assert_eq!(rpm(1234.56), "1234.6");
-        assert_eq!(rpm(-0.01), "0");
+        assert_eq!(tenth(2999.98), "3000");
+        assert_eq!(tenth(1234.56), "1234.6");
+        assert_eq!(tenth(-0.01), "0");
     }
 
     #[test]

@@ -8,7 +8,7 @@
 //! same speed axis. Every cell has a hover title with its numbers.
 
 use super::super::report::{MapCell, Report};
-use super::super::svg::{Frame, colour_bar, diverging, escape, nice_ticks, rpm, sig};
+use super::super::svg::{Frame, colour_bar, diverging, escape, nice_ticks, sig, tenth};
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 
@@ -46,15 +46,19 @@ pub fn station_map(report: &Report, station: &str, numbers: &BTreeMap<&str, usiz
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), c| {
             (lo.min(c.speed_rpm), hi.max(c.speed_rpm))
         });
-    let pad = if hi > lo { 0.03 * (hi - lo) } else { 50.0 };
-    let ticks = nice_ticks(lo - pad, hi + pad, 6);
+    // The speed axis spans the data and half a run-up bin (up to a tenth of the span)
+    // either side; its ticks are the nice ones inside.
+    let pad = if hi > lo { 0.05 * (hi - lo) } else { 50.0 };
+    let x = [lo - pad, hi + pad];
+    let mut ticks = nice_ticks(x[0], x[1], 6);
+    ticks.values.retain(|v| (x[0]..=x[1]).contains(v));
     let row_px = (300.0 / orders.len().max(1) as f64).clamp(6.0, 13.0);
     let mut frame = Frame {
         left: LEFT,
         top: 0.0,
         width: PLOT_WIDTH,
         height: row_px * orders.len().max(1) as f64,
-        x: ticks.range(),
+        x,
         y: [0.0, 1.0],
     };
     let panels = panels(report, &cells, &frame, numbers);
@@ -285,7 +289,7 @@ fn draw_panel(
             escape(&c.recording),
             escape(&c.station),
             c.order,
-            rpm(c.speed_rpm),
+            tenth(c.speed_rpm),
             sig(c.order * c.speed_rpm / 60.0, 4),
             sig(c.z, 3)
         );

@@ -12,8 +12,8 @@ const HEIGHT: f64 = 300.0;
 const BEFORE: &str = "#d95f02";
 const AFTER: &str = "#1f78b4";
 
-/// The SVG of one overlay; `after_name` names the verdict's model in the legend.
-pub fn overlay_svg(o: &Overlay, after_name: &str) -> String {
+/// The SVG of one overlay; `after_legend` is the legend of the verdict's model.
+pub fn overlay_svg(o: &Overlay, after_legend: &str) -> String {
     let at = |v: &[f64], i: usize| v.get(i).copied().unwrap_or(f64::NAN);
     let n = o.x.len();
     let sigma = |i: usize| {
@@ -103,7 +103,7 @@ pub fn overlay_svg(o: &Overlay, after_name: &str) -> String {
             px + 3.0,
         );
     }
-    legend(&mut out, frame.left, after_name);
+    legend(&mut out, frame.left, after_legend);
     format!(
         r##"<svg class="overlay" xmlns="http://www.w3.org/2000/svg" width="{WIDTH}" height="{HEIGHT}" viewBox="0 0 {WIDTH} {HEIGHT}" role="img"><title>{} · {} · order {}</title>{out}</svg>"##,
         escape(&o.recording),
@@ -113,7 +113,7 @@ pub fn overlay_svg(o: &Overlay, after_name: &str) -> String {
 }
 
 /// The legend above the plot area.
-fn legend(out: &mut String, left: f64, after_name: &str) {
+fn legend(out: &mut String, left: f64, after_legend: &str) {
     let y = 14.0;
     let _ = write!(
         out,
@@ -132,7 +132,7 @@ fn legend(out: &mut String, left: f64, after_name: &str) {
             " stroke-dasharray=\"6 4\"",
             "before: your model".to_string(),
         ),
-        (AFTER, "", format!("after: {after_name}")),
+        (AFTER, "", after_legend.to_string()),
     ];
     let mut x = left + 110.0;
     for (colour, dash, text) in items {
@@ -144,6 +144,6 @@ fn legend(out: &mut String, left: f64, after_name: &str) {
             y + 4.0,
             escape(&text)
         );
-        x += 30.0 + 7.0 * text.chars().count() as f64 + 16.0;
+        x += 30.0 + 6.2 * text.chars().count() as f64 + 18.0;
     }
 }

@@ -3,7 +3,7 @@
 //! with units in the headers.
 
 use super::super::report::{Candidate, ParameterValue, Report};
-use super::super::svg::{diverging, escape, rpm, sig};
+use super::super::svg::{diverging, escape, sig, tenth};
 use super::map::Z_LIMIT;
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
@@ -122,7 +122,7 @@ pub fn mismatches(out: &mut String, report: &Report) {
                 td(&m.recording),
                 td(&m.station),
                 td(&m.order),
-                format!(r#"<td class="num">{}</td>"#, rpm(m.speed_rpm)),
+                format!(r#"<td class="num">{}</td>"#, tenth(m.speed_rpm)),
                 num(m.frequency_hz, 4),
                 num(m.measured, 4),
                 num(m.simulated, 4),
@@ -157,7 +157,7 @@ pub fn resonances(out: &mut String, report: &Report) {
             let cells = [
                 td(&r.station),
                 td(&r.order),
-                format!(r#"<td class="num">{}</td>"#, rpm(r.speed_rpm)),
+                format!(r#"<td class="num">{}</td>"#, tenth(r.speed_rpm)),
                 num(r.frequency_hz, 4),
                 num(r.measured, 4),
                 num(r.simulated, 4),
@@ -256,16 +256,16 @@ pub fn recordings(out: &mut String, report: &Report) {
         .map(|(i, r)| {
             let [a, b] = r.speed_rpm;
             let speed = if a == b || !b.is_finite() {
-                rpm(a)
+                tenth(a)
             } else {
-                format!("{} → {}", rpm(a), rpm(b))
+                format!("{} → {}", tenth(a), tenth(b))
             };
             let cells = [
                 format!(r#"<td class="num">{}</td>"#, i + 1),
                 td(&r.label),
                 td(&r.kind),
                 format!(r#"<td class="num">{}</td>"#, escape(&speed)),
-                num(100.0 * r.load, 3),
+                format!(r#"<td class="num">{}</td>"#, tenth(100.0 * r.load)),
                 td(&r.role),
             ];
             (String::new(), cells.concat())
