@@ -70,14 +70,14 @@ svg .measured line{stroke:#222;stroke-width:1}svg .measured circle{fill:#222}
 pub fn report_html(report: &Report, model_name: &str) -> String {
     let mut out = String::with_capacity(64 * 1024);
     let title = format!("torsim diagnosis — {model_name}");
-    let _ = write!(
+    let _ = writeln!(
         out,
-        "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><meta name=\"viewport\" content=\"width=device-width, initial-scale=1\"><title>{}</title><style>{STYLE}</style></head><body>\n",
+        "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><meta name=\"viewport\" content=\"width=device-width, initial-scale=1\"><title>{}</title><style>{STYLE}</style></head><body>",
         escape(&title)
     );
-    let _ = write!(
+    let _ = writeln!(
         out,
-        "<h1>Diagnosis of {}</h1><p class=\"meta\">{} recordings · noise σ {} rpm (median over the measured order amplitudes: the yardstick of every z) · computed in {} s · torsim {} · report format {}</p>\n",
+        "<h1>Diagnosis of {}</h1><p class=\"meta\">{} recordings · noise σ {} rpm (median over the measured order amplitudes: the yardstick of every z) · computed in {} s · torsim {} · report format {}</p>",
         escape(model_name),
         report.recordings.len(),
         sig(report.noise_rpm, 3),
@@ -106,9 +106,9 @@ pub fn report_html(report: &Report, model_name: &str) -> String {
     overlays(&mut out, report);
     out.push_str("<h2 id=\"recordings\">Recordings</h2>\n");
     tables::recordings(&mut out, report);
-    let _ = write!(
+    let _ = writeln!(
         out,
-        "<p>Noise σ = {} rpm (median over all measured order amplitudes). The diagnosis took {} s.</p>\n</body></html>\n",
+        "<p>Noise σ = {} rpm (median over all measured order amplitudes). The diagnosis took {} s.</p>\n</body></html>",
         sig(report.noise_rpm, 3),
         sig(report.elapsed_s, 3)
     );
@@ -118,15 +118,15 @@ pub fn report_html(report: &Report, model_name: &str) -> String {
 /// The verdict, its parameters, the explanation and the held-out fit.
 fn verdict(out: &mut String, report: &Report) {
     let v = &report.verdict;
-    let _ = write!(
+    let _ = writeln!(
         out,
-        "<h2 id=\"verdict\">Verdict</h2><div class=\"verdict-box\"><p class=\"effect\">{} <code>{}</code></p><p>Confidence {} % (how clearly this beat the runner-up on held-out data).</p>\n",
+        "<h2 id=\"verdict\">Verdict</h2><div class=\"verdict-box\"><p class=\"effect\">{} <code>{}</code></p><p>Confidence {} % (how clearly this beat the runner-up on held-out data).</p>",
         escape(effect_words(&v.effect)),
         escape(&v.effect),
         sig(100.0 * v.confidence, 2)
     );
     tables::parameters(out, &v.parameters);
-    let _ = write!(out, "<p>{}</p>\n", escape(&v.explanation));
+    let _ = writeln!(out, "<p>{}</p>", escape(&v.explanation));
     let f = &report.fit;
     let change = if f.after < f.before && f.after > 0.0 && f.before.is_finite() {
         format!(" ({}× lower)", sig(f.before / f.after, 2))
@@ -140,9 +140,9 @@ fn verdict(out: &mut String, report: &Report) {
     } else {
         f.validated_on.join("; ")
     };
-    let _ = write!(
+    let _ = writeln!(
         out,
-        "<p class=\"fit\">{}: <b>{} → {}</b>{} on held-out data: {}</p></div>\n",
+        "<p class=\"fit\">{}: <b>{} → {}</b>{} on held-out data: {}</p></div>",
         escape(&f.metric),
         sig(f.before, 3),
         sig(f.after, 3),
@@ -172,9 +172,9 @@ fn mismatch_map(out: &mut String, report: &Report) {
         .collect();
     out.push_str("<div class=\"figures\">");
     for station in stations {
-        let _ = write!(
+        let _ = writeln!(
             out,
-            "<figure><figcaption>Station <code>{}</code></figcaption>{}</figure>\n",
+            "<figure><figcaption>Station <code>{}</code></figcaption>{}</figure>",
             escape(station),
             map::station_map(report, station, &numbers)
         );
@@ -195,9 +195,9 @@ fn overlays(out: &mut String, report: &Report) {
         _ => "after: fitted model",
     };
     for o in &report.overlays {
-        let _ = write!(
+        let _ = writeln!(
             out,
-            "<figure><figcaption>{} — <code>{}</code>, order {}</figcaption>{}</figure>\n",
+            "<figure><figcaption>{} — <code>{}</code>, order {}</figcaption>{}</figure>",
             escape(&o.recording),
             escape(&o.station),
             escape(&o.order),
