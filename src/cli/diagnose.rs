@@ -223,8 +223,16 @@ fn summary(report: &Report, model_name: &str) -> String {
             ]
         })
         .collect();
-    text += &table(&header, &rows);
+    if rows.is_empty() {
+        outln!(text, "  none tried");
+    } else {
+        text += &table(&header, &rows);
+    }
     let worst = report.mismatches.len().min(10);
+    if worst == 0 {
+        outln!(text, "\nno mismatches listed");
+        return text;
+    }
     outln!(
         text,
         "\n{worst} worst mismatches of the model (IAS order amplitudes, zero-to-peak; z = (measured − simulated)/σ):"
