@@ -20,7 +20,7 @@
 pub mod html;
 pub mod report;
 mod run;
-pub mod svg;
+mod svg;
 
 pub use html::report_html;
 pub use report::Report;
