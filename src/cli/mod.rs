@@ -6,6 +6,7 @@ mod campbell;
 mod check;
 mod compare;
 mod coupling;
+mod diagnose;
 pub mod error;
 mod format;
 mod input;
@@ -81,6 +82,8 @@ pub enum Command {
     Compare(compare::CompareArgs),
     /// Bench-like recordings from a richer model (one effect, parameter errors, noise), the truth apart.
     Synth(synth::SynthArgs),
+    /// Where the model and recordings disagree, the physics it left out, fitted and shown to improve on held-out data.
+    Diagnose(diagnose::DiagnoseArgs),
     /// Runs the [expect] checks of presets (all of ./presets/ when none named).
     Check {
         /// Model files or preset:NAME.
@@ -137,6 +140,7 @@ pub fn run(cli: Cli) -> Result<(), CliError> {
         Some(Command::Simulate(args)) => simulate::run(&args),
         Some(Command::Compare(args)) => compare::run(&args),
         Some(Command::Synth(args)) => synth::run(&args),
+        Some(Command::Diagnose(args)) => diagnose::run(&args),
         Some(Command::Coupling {
             model,
             frequency_hz,

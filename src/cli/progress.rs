@@ -34,6 +34,13 @@ impl Progress {
         true
     }
 
+    /// Replaces the bar's label (e.g. with the stage of the work).
+    pub fn message(&self, message: &str) {
+        if let Some(bar) = &self.bar {
+            bar.set_message(message.to_string());
+        }
+    }
+
     /// Removes the bar.
     pub fn finish(&self) {
         if let Some(bar) = &self.bar {

@@ -4,24 +4,25 @@
 //! the truth.
 //!
 //! The steps, one file each:
-//! - `observe`: the measured side. Every recording through the order analysis of
+//! - [`observe`]: the measured side. Every recording through the order analysis of
 //!   [`crate::signal`]: order amplitudes per station of every steady regime, of the time
 //!   blocks of a long run, and of the speed bins of a run-up, each with its noise.
-//! - `forward`: the same quantities predicted by a model: the nonlinear time domain of
+//! - [`forward`]: the same quantities predicted by a model: the nonlinear time domain of
 //!   [`crate::transient`] run at each recording's regime and analysed the same way, so
 //!   measured and simulated meet on equal terms.
-//! - `candidates`: the effects of the spec's table as model extensions with few
+//! - [`candidates`]: the effects of the spec's table as model extensions with few
 //!   parameters (they are the effects [`crate::synth`] can add), each with its signature.
-//! - `fit`: Levenberg–Marquardt on the effect's parameters together with the scale
+//! - [`fit`]: Levenberg–Marquardt on the effect's parameters together with the scale
 //!   factors of the plain parameters they could be confused with.
-//! - `decide`: held-out scoring with a parameter penalty and the verdict.
-//! - [`report`]: the JSON of the spec; `html` the page for a person.
+//! - [`decide`]: held-out scoring with a parameter penalty and the verdict.
+//! - [`report`]: the JSON of the spec; [`html`] the page for a person.
 
 pub mod candidates;
 pub mod decide;
 pub mod fit;
 pub mod forward;
 pub mod holdout;
+pub mod html;
 pub mod observe;
 pub mod observe_runup;
 pub mod report;
@@ -31,7 +32,9 @@ pub mod run;
 pub mod sensor;
 pub mod spread;
 pub mod surrogate;
+mod svg;
 
+pub use html::report_html;
 pub use report::Report;
 pub use run::diagnose;
 
