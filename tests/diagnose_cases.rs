@@ -31,7 +31,8 @@ fn inputs(case: &str) -> (Model, Vec<LabelledRecording>) {
         .map(|p| {
             let recording = read_recording(p, Some(&nodes)).expect("recording reads");
             let label = recording.meta.label.clone().unwrap_or_else(|| {
-                p.file_stem().map_or(String::new(), |s| s.to_string_lossy().into())
+                p.file_stem()
+                    .map_or(String::new(), |s| s.to_string_lossy().into())
             });
             LabelledRecording { label, recording }
         })
@@ -43,14 +44,22 @@ fn inputs(case: &str) -> (Model, Vec<LabelledRecording>) {
 fn truth_effect(case: &str) -> String {
     let text = std::fs::read_to_string(case_dir(case).join("truth.toml")).expect("truth.toml");
     let doc: toml_edit::DocumentMut = text.parse().expect("truth.toml parses");
-    doc["effect"]["name"].as_str().expect("effect.name").to_string()
+    doc["effect"]["name"]
+        .as_str()
+        .expect("effect.name")
+        .to_string()
 }
 
 fn run(case: &str) -> Report {
     let (model, recordings) = inputs(case);
     assert_eq!(recordings.len(), 10, "ten recordings per case");
-    diagnose(&model, &recordings, &DiagnoseOptions::default(), &mut |_, _| true)
-        .expect("diagnosis runs")
+    diagnose(
+        &model,
+        &recordings,
+        &DiagnoseOptions::default(),
+        &mut |_, _| true,
+    )
+    .expect("diagnosis runs")
 }
 
 /// The verdict names the truth; an effect or a parameter error improves the held-out fit.
@@ -58,7 +67,8 @@ fn check(case: &str) -> Report {
     let report = run(case);
     let truth = truth_effect(case);
     assert_eq!(
-        report.verdict.effect, truth,
+        report.verdict.effect,
+        truth,
         "case {case}: {}\ncandidates: {:#?}",
         report.verdict.explanation,
         report

@@ -57,7 +57,11 @@ impl Candidate {
     /// The model (and the tape joint of a sensor artifact) with the effect at `value`.
     pub fn apply(&self, model: &Model, value: f64) -> Result<(Model, Option<TapeJoint>), String> {
         if self.effect == Effect::SensorArtifact {
-            let station = self.fixed.first().map(|(_, s)| s.clone()).unwrap_or_default();
+            let station = self
+                .fixed
+                .first()
+                .map(|(_, s)| s.clone())
+                .unwrap_or_default();
             let joint = TapeJoint {
                 station,
                 joint_fraction: value,
@@ -118,7 +122,13 @@ pub fn candidates(model: &Model, stations: &[String], long_run: bool) -> Vec<Can
                 }
                 out.push(add(
                     Effect::UnmodelledMode,
-                    param("inertia_kg_m2", 0.25 * lightest, 1e-3 * lightest, 10.0 * lightest, true),
+                    param(
+                        "inertia_kg_m2",
+                        0.25 * lightest,
+                        1e-3 * lightest,
+                        10.0 * lightest,
+                        true,
+                    ),
                 ));
             }
             ConnectionKind::Shaft(s) => {

@@ -121,7 +121,9 @@ pub fn report(
                 parameters.insert(k.clone(), v.clone());
             }
         }
-        let runner_up = candidates.get(1).map_or(plain_score, |c| c.out.score.min(plain_score));
+        let runner_up = candidates
+            .get(1)
+            .map_or(plain_score, |c| c.out.score.min(plain_score));
         (
             Verdict {
                 effect: b.out.effect.clone(),
@@ -177,7 +179,8 @@ pub fn report(
             plain,
         )
     };
-    let mut rows: Vec<super::report::Candidate> = candidates.iter().map(|c| c.out.clone()).collect();
+    let mut rows: Vec<super::report::Candidate> =
+        candidates.iter().map(|c| c.out.clone()).collect();
     rows.push(plain_row);
     rows.push(none_row);
     rows.sort_by(|a, b| a.score.total_cmp(&b.score));
@@ -186,7 +189,16 @@ pub fn report(
         rows.insert(0, r);
     }
     let after = cx.chi2(after_model, true);
-    super::report_parts::assemble(cx, baseline, after_model, verdict, rows, before, after, elapsed_s)
+    super::report_parts::assemble(
+        cx,
+        baseline,
+        after_model,
+        verdict,
+        rows,
+        before,
+        after,
+        elapsed_s,
+    )
 }
 
 /// A candidate row with its name and evaluation.
@@ -214,4 +226,3 @@ pub fn validated_on(cx: &Context) -> Vec<String> {
 pub fn run_roles(cx: &Context) -> Vec<String> {
     roles(&cx.observed, &cx.held_out)
 }
-

@@ -49,9 +49,16 @@ pub fn levenberg_marquardt(
     residuals: &mut dyn FnMut(&[f64]) -> Option<Vec<f64>>,
 ) -> Option<FitResult> {
     let n = start.len();
-    let mut u: Vec<f64> = start.iter().zip(bounds).map(|(x, b)| to_internal(*x, b)).collect();
+    let mut u: Vec<f64> = start
+        .iter()
+        .zip(bounds)
+        .map(|(x, b)| to_internal(*x, b))
+        .collect();
     let external = |u: &[f64]| -> Vec<f64> {
-        u.iter().zip(bounds).map(|(v, b)| to_external(*v, b)).collect()
+        u.iter()
+            .zip(bounds)
+            .map(|(v, b)| to_external(*v, b))
+            .collect()
     };
     let mut evaluations = 1;
     let mut r = residuals(&external(&u))?;
@@ -140,15 +147,32 @@ mod tests {
             },
         ];
         let fit = levenberg_marquardt(&[1.0, 2.0], &bounds, 50, &mut |x| {
-            Some(t.iter().zip(&y).map(|(t, y)| x[0] * (-t / x[1]).exp() - y).collect())
+            Some(
+                t.iter()
+                    .zip(&y)
+                    .map(|(t, y)| x[0] * (-t / x[1]).exp() - y)
+                    .collect(),
+            )
         })
         .unwrap();
         assert!((fit.x[0] - 3.0).abs() < 1e-6, "{:?}", fit.x);
         assert!((fit.x[1] - 0.7).abs() < 1e-6, "{:?}", fit.x);
         // A bound that excludes the answer holds.
-        let tight = [bounds[0], Bounds { lo: 1.0, hi: 5.0, log: false }];
+        let tight = [
+            bounds[0],
+            Bounds {
+                lo: 1.0,
+                hi: 5.0,
+                log: false,
+            },
+        ];
         let fit = levenberg_marquardt(&[1.0, 2.0], &tight, 50, &mut |x| {
-            Some(t.iter().zip(&y).map(|(t, y)| x[0] * (-t / x[1]).exp() - y).collect())
+            Some(
+                t.iter()
+                    .zip(&y)
+                    .map(|(t, y)| x[0] * (-t / x[1]).exp() - y)
+                    .collect(),
+            )
         })
         .unwrap();
         assert!(fit.x[1] >= 1.0);

@@ -142,7 +142,11 @@ fn predict_run(
     }
     let analysis_opts = analysis_options(max_order);
     let analyse = |rec: &Recording| analyse_with(rec, &analysis_opts).map_err(|e| e.to_string());
-    let mine = observed.observations.iter().enumerate().filter(|(_, o)| o.run == r);
+    let mine = observed
+        .observations
+        .iter()
+        .enumerate()
+        .filter(|(_, o)| o.run == r);
     match run.regime {
         Regime::Steady { .. } => {
             let a = analyse(&rec)?;

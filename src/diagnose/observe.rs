@@ -218,7 +218,10 @@ pub fn observe(
             RunKind::RunUp => {
                 let t0 = rec.time_s.first().copied().unwrap_or(0.0);
                 let (from, to, speeds) = ramp_of(&analysis, t0, duration).map_err(fail)?;
-                run.window_times_s = analysis.stft.as_ref().map_or(Vec::new(), |s| s.times_s.clone());
+                run.window_times_s = analysis
+                    .stft
+                    .as_ref()
+                    .map_or(Vec::new(), |s| s.times_s.clone());
                 run.regime = Regime::RunUp {
                     from_rpm: from,
                     to_rpm: to,
@@ -231,16 +234,15 @@ pub fn observe(
         observed.sample_noise_rpm.push(noise);
     }
     // Run-ups take the sample noise of the steady runs (median per station).
-    for i in 0..observed.runs.len() {
+    for (i, lr) in recordings.iter().enumerate() {
         if !matches!(observed.runs[i].regime, Regime::RunUp { .. }) {
             continue;
         }
-        let analysis = analyse_with(&recordings[i].recording, &options).map_err(|e| {
-            DiagnoseError::Analysis {
-                label: recordings[i].label.clone(),
+        let analysis =
+            analyse_with(&lr.recording, &options).map_err(|e| DiagnoseError::Analysis {
+                label: lr.label.clone(),
                 message: e.to_string(),
-            }
-        })?;
+            })?;
         let noise: Vec<f64> = observed.runs[i]
             .stations
             .iter()
@@ -284,7 +286,10 @@ fn median_noise(observed: &Observed, station: &str) -> f64 {
         .runs
         .iter()
         .zip(&observed.sample_noise_rpm)
-        .filter_map(|(r, n)| n.get(r.stations.iter().position(|s| s == station)?).copied())
+        .filter_map(|(r, n)| {
+            n.get(r.stations.iter().position(|s| s == station)?)
+                .copied()
+        })
         .filter(|x| x.is_finite() && *x > 0.0)
         .collect();
     values.sort_by(f64::total_cmp);
@@ -356,7 +361,12 @@ fn steady_noise(
             // resists the large orders, whose parts differ by more than noise (the wobble).
             // s is the per-component noise of one part, s/√P that of the whole record.
             let mut excess: Vec<f64> = Vec::new();
-            for (k, o) in first.orders.iter().enumerate().filter(|(_, o)| o.order > 0.0) {
+            for (k, o) in first
+                .orders
+                .iter()
+                .enumerate()
+                .filter(|(_, o)| o.order > 0.0)
+            {
                 let xs: Vec<f64> = parts
                     .iter()
                     .filter_map(|p| p.stations.get(s)?.orders.get(k))
@@ -395,7 +405,14 @@ fn long_run(
         let analysis = analyse_with(&part, options).map_err(|e| e.to_string())?;
         let stations: Vec<String> = analysis.stations.iter().map(|s| s.name.clone()).collect();
         let noise = steady_noise(&part, block, options, &stations)?;
-        push_steady(observed, run, b, &analysis, &noise, (b as f64 + 0.5) * block);
+        push_steady(
+            observed,
+            run,
+            b,
+            &analysis,
+            &noise,
+            (b as f64 + 0.5) * block,
+        );
         noise_sum.resize(noise.len(), 0.0);
         for (acc, s) in noise_sum.iter_mut().zip(&noise) {
             *acc += sample_noise(*s, part.time_s.len()) / LONG_RUN_BLOCKS as f64;

@@ -38,7 +38,13 @@ pub fn bins(window_speeds_rpm: &[f64]) -> (Vec<Option<usize>>, Vec<f64>) {
     let speeds = sum
         .iter()
         .zip(&count)
-        .map(|(s, c)| if *c >= MIN_WINDOWS { s / *c as f64 } else { f64::NAN })
+        .map(|(s, c)| {
+            if *c >= MIN_WINDOWS {
+                s / *c as f64
+            } else {
+                f64::NAN
+            }
+        })
         .collect();
     (index, speeds)
 }

@@ -29,7 +29,12 @@ pub fn assemble(
     let label = |r: usize| obs.runs[r].label.clone();
     let mut mismatch_map = Vec::with_capacity(obs.observations.len());
     let mut mismatches = Vec::new();
-    for ((o, z), sim) in obs.observations.iter().zip(&baseline.z).zip(&baseline.simulated) {
+    for ((o, z), sim) in obs
+        .observations
+        .iter()
+        .zip(&baseline.z)
+        .zip(&baseline.simulated)
+    {
         mismatch_map.push(MapCell {
             recording: label(o.run),
             station: o.station.clone(),
@@ -142,12 +147,16 @@ fn resonances(cx: &Context, baseline: &Evaluated) -> Vec<Resonance> {
     out
 }
 
+/// An overlay's group: run kind (0 steady, 1 long run, 2 run-up), load in %, station,
+/// order.
+type GroupKey = (usize, i64, String, String);
+
 /// Measured, before and after along the held-out data: per run kind and station, the
 /// orders whose held-out χ² fell the most.
 fn overlays(cx: &Context, before: &Evaluated, after: &Evaluated) -> Vec<Overlay> {
     let obs = &cx.observed;
     // Group: (kind, load key, station, order) over held-out observations.
-    let mut groups: Vec<((usize, i64, String, String), Vec<usize>)> = Vec::new();
+    let mut groups: Vec<(GroupKey, Vec<usize>)> = Vec::new();
     for (i, o) in obs.observations.iter().enumerate() {
         if !cx.held_out[i] {
             continue;
@@ -187,8 +196,14 @@ fn overlays(cx: &Context, before: &Evaluated, after: &Evaluated) -> Vec<Overlay>
             idx.sort_by(|a, b| x_of(*a).total_cmp(&x_of(*b)));
             let recording = match kind {
                 0 => format!("steady regimes at {load} % load (held out)"),
-                1 => format!("{} (second half)", obs.runs[obs.observations[idx[0]].run].label),
-                _ => format!("{} (held-out bins)", obs.runs[obs.observations[idx[0]].run].label),
+                1 => format!(
+                    "{} (second half)",
+                    obs.runs[obs.observations[idx[0]].run].label
+                ),
+                _ => format!(
+                    "{} (held-out bins)",
+                    obs.runs[obs.observations[idx[0]].run].label
+                ),
             };
             Overlay {
                 recording,
@@ -196,7 +211,10 @@ fn overlays(cx: &Context, before: &Evaluated, after: &Evaluated) -> Vec<Overlay>
                 order,
                 x_label: if kind == 1 { "time [s]" } else { "speed [rpm]" }.into(),
                 x: idx.iter().map(|&i| x_of(i)).collect(),
-                measured: idx.iter().map(|&i| obs.observations[i].measured_rpm).collect(),
+                measured: idx
+                    .iter()
+                    .map(|&i| obs.observations[i].measured_rpm)
+                    .collect(),
                 sigma: idx.iter().map(|&i| obs.observations[i].sigma_rpm).collect(),
                 before: idx.iter().map(|&i| before.simulated[i]).collect(),
                 after: idx.iter().map(|&i| after.simulated[i]).collect(),

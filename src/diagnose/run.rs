@@ -66,10 +66,22 @@ pub struct Context<'a> {
 
 impl Context<'_> {
     /// The time-domain amplitudes of `model` as the bench would measure them.
-    pub fn simulate(&self, model: &Model, joint: Option<&TapeJoint>) -> Result<Vec<f64>, DiagnoseError> {
-        let mut v = forward::predict(model, &self.observed, self.options.max_order, self.options.threads)
-            .map_err(|(label, message)| DiagnoseError::Simulation { label, message })?;
-        for (x, f) in v.iter_mut().zip(spread::spread_factors(model, &self.observed)) {
+    pub fn simulate(
+        &self,
+        model: &Model,
+        joint: Option<&TapeJoint>,
+    ) -> Result<Vec<f64>, DiagnoseError> {
+        let mut v = forward::predict(
+            model,
+            &self.observed,
+            self.options.max_order,
+            self.options.threads,
+        )
+        .map_err(|(label, message)| DiagnoseError::Simulation { label, message })?;
+        for (x, f) in v
+            .iter_mut()
+            .zip(spread::spread_factors(model, &self.observed))
+        {
             *x *= f;
         }
         sensor::measure(&self.observed, &ratios(model), joint, &mut v);
@@ -146,7 +158,11 @@ impl Context<'_> {
         let mut residuals = |x: &[f64]| -> Option<Vec<f64>> {
             let (m, j) = build(x)?;
             let f = linear_predict(&m, &self.observed, j.as_ref())?;
-            let s: Vec<f64> = f.iter().zip(&correction).map(|(a, d)| (a + d).max(0.0)).collect();
+            let s: Vec<f64> = f
+                .iter()
+                .zip(&correction)
+                .map(|(a, d)| (a + d).max(0.0))
+                .collect();
             let mut r = self.fit_z(&s);
             r.extend(x[..self.plain.len()].iter().map(|f| f.ln() / PLAIN_PRIOR));
             Some(r)
@@ -180,17 +196,27 @@ impl Context<'_> {
     /// data (surrogate).
     pub fn single_parameter(&self, baseline: &Evaluated) -> Option<(usize, f64, f64)> {
         let f0 = linear_predict(&baseline.model, &self.observed, None)?;
-        let correction: Vec<f64> = baseline.simulated.iter().zip(&f0).map(|(t, f)| t - f).collect();
+        let correction: Vec<f64> = baseline
+            .simulated
+            .iter()
+            .zip(&f0)
+            .map(|(t, f)| t - f)
+            .collect();
         let mut best: Option<(usize, f64, f64)> = None;
         for i in 0..self.plain.len() {
-            let fit = levenberg_marquardt(&[1.0], &[PLAIN_BOUNDS], SURROGATE_ITERATIONS, &mut |x| {
-                let mut factors = vec![1.0; self.plain.len()];
-                factors[i] = x[0];
-                let m = scaled(self.user, &self.plain, &factors).ok()?;
-                let f = linear_predict(&m, &self.observed, None)?;
-                let s: Vec<f64> = f.iter().zip(&correction).map(|(a, d)| (a + d).max(0.0)).collect();
-                Some(self.fit_z(&s))
-            })?;
+            let fit =
+                levenberg_marquardt(&[1.0], &[PLAIN_BOUNDS], SURROGATE_ITERATIONS, &mut |x| {
+                    let mut factors = vec![1.0; self.plain.len()];
+                    factors[i] = x[0];
+                    let m = scaled(self.user, &self.plain, &factors).ok()?;
+                    let f = linear_predict(&m, &self.observed, None)?;
+                    let s: Vec<f64> = f
+                        .iter()
+                        .zip(&correction)
+                        .map(|(a, d)| (a + d).max(0.0))
+                        .collect();
+                    Some(self.fit_z(&s))
+                })?;
             let n = self.held_out.iter().filter(|h| !**h).count().max(1) as f64;
             let chi2 = fit.cost / n;
             if best.is_none_or(|b| chi2 < b.2) {
@@ -226,7 +252,11 @@ impl Context<'_> {
     }
 
     /// Fits a candidate's parameter in the time domain with the plain factors of `at`.
-    pub fn fit_time_domain(&self, at: &Evaluated, c: &Candidate) -> Result<Evaluated, DiagnoseError> {
+    pub fn fit_time_domain(
+        &self,
+        at: &Evaluated,
+        c: &Candidate,
+    ) -> Result<Evaluated, DiagnoseError> {
         let base = scaled(self.user, &self.plain, &at.factors).map_err(DiagnoseError::Input)?;
         let bounds = [Bounds {
             lo: c.param.lo,
@@ -234,18 +264,23 @@ impl Context<'_> {
             log: c.param.log,
         }];
         let cheap = c.effect == Effect::SensorArtifact;
-        let fit = levenberg_marquardt(&[c.param.start], &bounds, if cheap { 20 } else { TIME_DOMAIN_ITERATIONS }, &mut |x| {
-            let (m, j) = c.apply(&base, x[0]).ok()?;
-            let simulated = if cheap {
-                let mut v = at.simulated.clone();
-                // Undo nothing: the artifact adds in power to the measured amplitudes.
-                sensor::add_joint(&self.observed, &ratios(&m), j.as_ref(), &mut v);
-                v
-            } else {
-                self.simulate(&m, j.as_ref()).ok()?
-            };
-            Some(self.fit_z(&simulated))
-        });
+        let fit = levenberg_marquardt(
+            &[c.param.start],
+            &bounds,
+            if cheap { 20 } else { TIME_DOMAIN_ITERATIONS },
+            &mut |x| {
+                let (m, j) = c.apply(&base, x[0]).ok()?;
+                let simulated = if cheap {
+                    let mut v = at.simulated.clone();
+                    // Undo nothing: the artifact adds in power to the measured amplitudes.
+                    sensor::add_joint(&self.observed, &ratios(&m), j.as_ref(), &mut v);
+                    v
+                } else {
+                    self.simulate(&m, j.as_ref()).ok()?
+                };
+                Some(self.fit_z(&simulated))
+            },
+        );
         let value = fit.map_or(c.param.start, |f| f.x[0]);
         let (m, j) = c.apply(&base, value).map_err(DiagnoseError::Input)?;
         if cheap {
@@ -334,16 +369,28 @@ pub fn diagnose(
     step(0.2, "fitting the plain parameters")?;
     let plain_fit = cx.rounds(baseline.clone(), None, PLAIN_ROUNDS)?;
     let stations: Vec<String> = {
-        let mut s: Vec<String> = cx.observed.runs.iter().flat_map(|r| r.stations.clone()).collect();
+        let mut s: Vec<String> = cx
+            .observed
+            .runs
+            .iter()
+            .flat_map(|r| r.stations.clone())
+            .collect();
         s.sort();
         s.dedup();
         s
     };
-    let long_run = cx.observed.runs.iter().any(|r| matches!(r.regime, Regime::LongRun { .. }));
+    let long_run = cx
+        .observed
+        .runs
+        .iter()
+        .any(|r| matches!(r.regime, Regime::LongRun { .. }));
     let list = candidates(model, &stations, long_run);
     let mut fitted: Vec<(Candidate, Evaluated)> = Vec::new();
     for (k, c) in list.iter().enumerate() {
-        step(0.25 + 0.7 * k as f64 / list.len() as f64, &format!("fitting {}", c.name()))?;
+        step(
+            0.25 + 0.7 * k as f64 / list.len() as f64,
+            &format!("fitting {}", c.name()),
+        )?;
         let result = if linear_sees(c.effect) {
             cx.rounds(plain_fit.clone(), Some(c), CANDIDATE_ROUNDS)
         } else {

@@ -9,8 +9,8 @@
 //! `mean_c A(n_c) / A(n̄)`.
 
 use super::observe::{Observed, Regime};
-use crate::model::Model;
 use super::surrogate::{causal_system, run_speeds};
+use crate::model::Model;
 use crate::physics::Excitation;
 use crate::response::forced_response;
 

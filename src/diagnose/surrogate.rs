@@ -14,9 +14,9 @@ use super::sensor::{self, TapeJoint};
 use super::spread::spread_factors;
 use crate::model::{ConnectionKind, Model};
 use crate::physics::{ElementLaw, Excitation, OperatingPoint, System};
-use crate::transient::maxwell::{MaxwellChain, excited_band_hz};
 use crate::response::forced_response;
 use crate::synth::param_error::{parameter_names, scale_parameter};
+use crate::transient::maxwell::{MaxwellChain, excited_band_hz};
 
 /// A plain parameter: its full name (`connection.shaft.stiffness`) and the node or
 /// connection it belongs to.
@@ -73,8 +73,13 @@ pub fn causal_system(model: &Model, load: f64, [lo, hi]: [f64; 2]) -> Option<Sys
     let mut system = System::new(model, point).ok()?;
     let band = excited_band_hz(lo, hi, 24.0);
     for e in &mut system.elements {
-        if let (ElementLaw::Rubber { base_stiffness_nm_per_rad, .. }, ConnectionKind::Rubber(stage)) =
-            (&e.law, &model.connections.get(e.connection)?.kind)
+        if let (
+            ElementLaw::Rubber {
+                base_stiffness_nm_per_rad,
+                ..
+            },
+            ConnectionKind::Rubber(stage),
+        ) = (&e.law, &model.connections.get(e.connection)?.kind)
         {
             let chain = MaxwellChain::fit(stage, band);
             e.law = ElementLaw::Causal {
@@ -89,7 +94,10 @@ pub fn causal_system(model: &Model, load: f64, [lo, hi]: [f64; 2]) -> Option<Sys
 
 /// The user's value of the plain parameter `name` (full name), if it exists.
 pub fn value_of(model: &Model, name: &str) -> Option<f64> {
-    let target = plain_parameters(model).into_iter().find(|p| p.name == name)?.target;
+    let target = plain_parameters(model)
+        .into_iter()
+        .find(|p| p.name == name)?
+        .target;
     let mut copy = model.clone();
     scale_parameter(&mut copy, &target, 1.0)
         .ok()
@@ -116,12 +124,18 @@ pub fn linear_predict(
         let mine: Vec<usize> = (0..out.len())
             .filter(|i| observed.observations[*i].run == r)
             .collect();
-        let mut orders: Vec<f64> = mine.iter().map(|i| observed.observations[*i].order).collect();
+        let mut orders: Vec<f64> = mine
+            .iter()
+            .map(|i| observed.observations[*i].order)
+            .collect();
         orders.sort_by(f64::total_cmp);
         orders.dedup();
         let mut speeds: Vec<f64> = match run.regime {
             Regime::Steady { speed_rpm } | Regime::LongRun { speed_rpm } => vec![speed_rpm],
-            Regime::RunUp { .. } => mine.iter().map(|i| observed.observations[*i].speed_rpm).collect(),
+            Regime::RunUp { .. } => mine
+                .iter()
+                .map(|i| observed.observations[*i].speed_rpm)
+                .collect(),
         };
         speeds.sort_by(f64::total_cmp);
         speeds.dedup();
