@@ -234,13 +234,13 @@ impl Context<'_> {
         candidate: Option<&Candidate>,
         max: usize,
     ) -> Result<Evaluated, DiagnoseError> {
+        // A candidate's first round always counts when it adds the effect.
+        let mut first = candidate.is_some() && start.value.is_none();
         let mut best = start;
-        let mut first = true;
         for _ in 0..max {
             let next = self.fit_surrogate(&best, candidate)?;
             let (old, new) = (self.chi2(&best, false), self.chi2(&next, false));
-            // A candidate's first round always counts: it adds the effect.
-            if new < old || (first && candidate.is_some()) {
+            if new < old || first {
                 best = next;
             }
             first = false;
@@ -393,8 +393,14 @@ pub fn diagnose(
         )?;
         let result = if linear_sees(c.effect) {
             cx.rounds(plain_fit.clone(), Some(c), CANDIDATE_ROUNDS)
-        } else {
+        } else if c.effect == Effect::SensorArtifact {
             cx.fit_time_domain(&plain_fit, c)
+        } else {
+            // The effect's value in the time domain, then the plain parameters refitted
+            // with the effect in place (the linear model cannot see it, the time domain's
+            // correction carries it).
+            cx.fit_time_domain(&plain_fit, c)
+                .and_then(|e| cx.rounds(e, Some(c), CANDIDATE_ROUNDS - 1))
         };
         // A candidate whose model cannot be built or run is left out, not fatal.
         if let Ok(e) = result {
