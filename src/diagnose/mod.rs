@@ -33,6 +33,8 @@ pub mod sensor;
 pub mod spread;
 pub mod surrogate;
 mod svg;
+#[cfg(test)]
+mod tests;
 
 pub use html::report_html;
 pub use report::Report;

@@ -28,7 +28,7 @@ const PLAIN_ROUNDS: usize = 6;
 /// The same for a candidate, from the plain fit.
 const CANDIDATE_ROUNDS: usize = 3;
 /// Rounds stop when χ²/N on the fitted data improves by less than this fraction.
-const ROUND_GAIN: f64 = 0.02;
+const ROUND_GAIN: f64 = 0.005;
 /// Levenberg–Marquardt iterations on the surrogate, and on the time domain.
 const SURROGATE_ITERATIONS: usize = 30;
 const TIME_DOMAIN_ITERATIONS: usize = 3;
@@ -407,6 +407,10 @@ pub fn diagnose(
             fitted.push((c.clone(), e));
         }
     }
+    // The plain fit gets the same further rounds a candidate had, so that no candidate
+    // wins by a better-converged plain fit alone.
+    step(0.95, "refining the plain parameters")?;
+    let plain_fit = cx.rounds(plain_fit, None, CANDIDATE_ROUNDS)?;
     step(0.97, "deciding")?;
     let single = cx.single_parameter(&baseline);
     let report = decide::report(
