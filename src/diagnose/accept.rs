@@ -201,6 +201,10 @@ mod tests {
         ParameterValue::Text(s.into())
     }
 
+    fn num(x: f64) -> ParameterValue {
+        ParameterValue::Number(x)
+    }
+
     /// The coupling 10 % softer: the accepted model is the library's scaled model, and
     /// its first mode (engine against brake across the coupling) falls by less than
     /// √0.9 (the shaft in series stays as stiff).
@@ -210,10 +214,7 @@ mod tests {
         let name = "connection.coupling.elements.radial_stiffness";
         let r = report(
             "parameter_error",
-            &[
-                ("parameter", text(name)),
-                ("factor", ParameterValue::Number(0.9)),
-            ],
+            &[("parameter", text(name)), ("factor", num(0.9))],
             &[],
         );
         let accepted = accepted_model(&user, &r).expect("accepted");
@@ -230,10 +231,7 @@ mod tests {
         assert!(ratio < 1.0 && ratio > 0.9f64.sqrt(), "mode 1 × {ratio}");
         let r = report(
             "parameter_error",
-            &[
-                ("parameter", text("inertia.nowhere")),
-                ("factor", ParameterValue::Number(0.9)),
-            ],
+            &[("parameter", text("inertia.nowhere")), ("factor", num(0.9))],
             &[],
         );
         let e = accepted_model(&user, &r).unwrap_err();
@@ -247,18 +245,12 @@ mod tests {
         let user = bench();
         let r = report(
             "gear_backlash",
+            &[("connection", text("gearbox")), ("backlash_deg", num(0.1))],
             &[
                 ("connection", text("gearbox")),
-                ("backlash_deg", ParameterValue::Number(0.1)),
-            ],
-            &[
-                ("connection", text("gearbox")),
-                ("backlash_deg", ParameterValue::Number(0.1)),
-                (
-                    "scale.connection.gearbox.mesh_stiffness",
-                    ParameterValue::Number(1.1),
-                ),
-                ("scale.inertia.brake", ParameterValue::Number(1.0)),
+                ("backlash_deg", num(0.1)),
+                ("scale.connection.gearbox.mesh_stiffness", num(1.1)),
+                ("scale.inertia.brake", num(1.0)),
             ],
         );
         let accepted = accepted_model(&user, &r).expect("accepted");
@@ -294,9 +286,9 @@ mod tests {
             "sensor_artifact",
             &[
                 ("station", text("coupling_es")),
-                ("joint_fraction", ParameterValue::Number(0.1)),
+                ("joint_fraction", num(0.1)),
             ],
-            &[("scale.inertia.brake", ParameterValue::Number(1.2))],
+            &[("scale.inertia.brake", num(1.2))],
         );
         assert_eq!(accepted_model(&user, &sensor).expect("sensor"), user);
         let e = accepted_model(&user, &report("warp_drive", &[], &[])).unwrap_err();

@@ -181,7 +181,9 @@ fn a_report_shows_and_accept_is_one_undo_step() {
     assert_eq!(coupling_n_per_m(&h.state().model), k * 0.9);
     assert_eq!(h.state().undo.len(), undo_before + 1, "one undo step");
     assert!(h.state().dirty);
-    h.get_by_label_contains("Accepted parameter_error");
+    h.get_by_label_contains(
+        "Accepted: connection.coupling.elements.radial_stiffness: 2.200e6 to 1.980e6 (× 0.900).",
+    );
     assert!(
         h.get_by_label("Accept verdict")
             .accesskit_node()
@@ -275,4 +277,27 @@ fn a_real_diagnosis_runs_off_the_gui_thread() {
         2,
         "the verdict and its row"
     );
+}
+
+/// "Save report…" writes the page for a person atomically: the verdict is in it and no
+/// temporary file is left; a folder that does not exist is an error naming the file.
+#[test]
+fn the_report_page_is_written_atomically() {
+    let dir = std::env::temp_dir().join(format!("torsim-gui-report-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let page = dir.join("diagnosis.html");
+    let written = super::diagnosis::save::write_page(&page, &report(), "bench").expect("page");
+    assert_eq!(written, page);
+    let html = std::fs::read_to_string(&page).expect("read");
+    assert!(html.contains("parameter_error") && html.contains("Regime B"));
+    assert_eq!(
+        std::fs::read_dir(&dir).expect("dir").count(),
+        1,
+        "no temporary"
+    );
+    let missing = dir.join("no/such/folder/r.html");
+    let e = super::diagnosis::save::write_page(&missing, &report(), "bench").unwrap_err();
+    assert!(e.contains("no/such/folder/r.html"), "{e}");
+    let _ = std::fs::remove_dir_all(&dir);
 }

@@ -57,8 +57,9 @@ pub fn value_text(v: &ParameterValue) -> String {
     }
 }
 
-/// What `after` changes from `before`: the effect added with its parameters, then every
-/// plain parameter that moved (`inertia.brake: 1.5 to 1.53 (× 1.020)`).
+/// What `after` changes from `before`: the effect added with its parameters
+/// (`gear_backlash with backlash_deg = 0.1, connection = gearbox`), then every plain
+/// parameter that moved (`inertia.brake: 1.5 to 1.53 (× 1.020)`).
 pub fn changes(before: &Model, after: &Model, report: &Report) -> Vec<String> {
     let mut out = Vec::new();
     let v = &report.verdict;
@@ -71,7 +72,7 @@ pub fn changes(before: &Model, after: &Model, report: &Report) -> Vec<String> {
             .iter()
             .map(|(k, x)| format!("{k} = {}", value_text(x)))
             .collect();
-        out.push(format!("adds {}: {}", v.effect, parameters.join(", ")));
+        out.push(format!("{} with {}", v.effect, parameters.join(", ")));
     }
     for p in plain_parameters(before) {
         if let (Some(a), Some(b)) = (value_of(before, &p.name), value_of(after, &p.name))

@@ -14,12 +14,12 @@ use torsim::diagnose::report::MapCell;
 
 /// |z| at which the colour saturates.
 pub const Z_CLAMP: f64 = 10.0;
-/// Width of a steady regime's cell, rpm.
-const STEADY_RPM: f64 = 60.0;
+/// Width of a steady regime's cell, rpm (regimes are some 500 rpm apart).
+const STEADY_RPM: f64 = 160.0;
 /// Height of the plots, points.
-const HEIGHT: f32 = 300.0;
+const HEIGHT: f32 = 280.0;
 /// Width of the colour scale, points.
-const SCALE_WIDTH: f32 = 70.0;
+const SCALE_WIDTH: f32 = 80.0;
 
 const NEUTRAL: [f32; 3] = [70.0, 70.0, 70.0];
 const ABOVE: [f32; 3] = [235.0, 65.0, 45.0];
@@ -110,7 +110,8 @@ pub fn map_ui(report: &Report, ui: &mut Ui) {
     ui.label(
         egui::RichText::new(format!(
             "z = (measured − simulated)/σ of each IAS order amplitude; noise σ ≈ {} rpm. \
-             Wide cells: run-up bins; outlined: steady regimes and long-run blocks.",
+             Cells without outline: run-up bins; outlined: steady regimes and long-run \
+             blocks, drawn over them. Saturated beyond ±10; hover for the values.",
             sig4(report.noise_rpm)
         ))
         .weak(),
@@ -157,6 +158,7 @@ fn station_plot(ui: &mut Ui, station: &str, cells: &[Drawn], width: f32) {
         .x_axis_label("engine speed [rpm]")
         .y_axis_label("engine order")
         .x_grid_spacer(crate::gui::plots::grid_125)
+        .allow_scroll(false)
         .label_formatter(|pos| {
             let p = match pos {
                 HoverPosition::NearDataPoint { position, .. }
@@ -170,7 +172,7 @@ fn station_plot(ui: &mut Ui, station: &str, cells: &[Drawn], width: f32) {
                 let [y0, y1] = d.y;
                 let corners: PlotPoints = vec![[x0, y0], [x1, y0], [x1, y1], [x0, y1]].into();
                 let stroke = if d.steady {
-                    Stroke::new(1.0, Color32::from_gray(20))
+                    Stroke::new(1.0, Color32::from_gray(210))
                 } else {
                     Stroke::new(0.0, Color32::TRANSPARENT)
                 };
@@ -185,13 +187,13 @@ fn station_plot(ui: &mut Ui, station: &str, cells: &[Drawn], width: f32) {
         });
 }
 
-/// The colour scale from −10 to +10, labelled every 5.
+/// The colour scale from −10 to +10, labelled every 5, with what each end means.
 fn scale_ui(ui: &mut Ui) {
     let height = HEIGHT + 20.0;
     let (rect, _) = ui.allocate_exact_size(Vec2::new(SCALE_WIDTH, height), Sense::hover());
     let painter = ui.painter_at(rect);
     let bar = Rect::from_min_max(
-        rect.min + Vec2::new(6.0, 40.0),
+        rect.min + Vec2::new(6.0, 56.0),
         rect.min + Vec2::new(20.0, height - 40.0),
     );
     let steps = 80;
@@ -206,14 +208,11 @@ fn scale_ui(ui: &mut Ui) {
         painter.rect_filled(r, 0.0, z_colour(z));
     }
     let text = ui.visuals().text_color();
+    let weak = ui.visuals().weak_text_color();
     let font = egui::TextStyle::Small.resolve(ui.style());
-    painter.text(
-        rect.min + Vec2::new(2.0, 22.0),
-        Align2::LEFT_TOP,
-        "z",
-        font.clone(),
-        text,
-    );
+    let at = |dy: f32| rect.min + Vec2::new(2.0, dy);
+    painter.text(at(20.0), Align2::LEFT_TOP, "z", font.clone(), text);
+    painter.text(at(34.0), Align2::LEFT_TOP, "model low", font.clone(), weak);
     for k in -2..=2 {
         let z = 5.0 * f64::from(k);
         let y = bar.bottom() - ((z / Z_CLAMP + 1.0) / 2.0) as f32 * bar.height();
@@ -221,26 +220,24 @@ fn scale_ui(ui: &mut Ui) {
             [egui::pos2(bar.right(), y), egui::pos2(bar.right() + 4.0, y)],
             Stroke::new(1.0, text),
         );
+        let label = if k == 0 {
+            "0".to_string()
+        } else {
+            format!("{z:+.0}")
+        };
         painter.text(
             egui::pos2(bar.right() + 6.0, y),
             Align2::LEFT_CENTER,
-            format!("{z:+.0}"),
+            label,
             font.clone(),
             text,
         );
     }
     painter.text(
-        egui::pos2(rect.left() + 2.0, bar.bottom() + 6.0),
+        egui::pos2(rect.left() + 2.0, bar.bottom() + 10.0),
         Align2::LEFT_TOP,
         "model high",
-        font.clone(),
-        text,
-    );
-    painter.text(
-        egui::pos2(rect.left() + 2.0, bar.top() - 6.0),
-        Align2::LEFT_BOTTOM,
-        "model low",
         font,
-        text,
+        weak,
     );
 }

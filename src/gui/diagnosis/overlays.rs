@@ -4,7 +4,7 @@
 
 use crate::gui::plots::{fmt, grid_125};
 use egui::{Color32, RichText, Ui};
-use egui_plot::{HoverPosition, Legend, Line, LineStyle, Plot, PlotPoints, Points};
+use egui_plot::{HoverPosition, Line, LineStyle, Plot, PlotPoints, Points};
 use torsim::diagnose::Report;
 use torsim::diagnose::report::Overlay;
 
@@ -21,6 +21,11 @@ pub fn overlays_ui(report: &Report, ui: &mut Ui) {
         ui.label("no held-out data to show");
         return;
     }
+    ui.horizontal(|ui| {
+        ui.label(RichText::new("measured ± σ: points").color(MEASURED));
+        ui.label(RichText::new("before, the model as it is: dashed").color(BEFORE));
+        ui.label(RichText::new("after, the verdict's model: solid").color(AFTER));
+    });
     let spacing = ui.spacing().item_spacing.x;
     let width = ((ui.available_width() - spacing) / 2.0).max(240.0);
     for (row, pair) in report.overlays.chunks(2).enumerate() {
@@ -78,12 +83,11 @@ fn overlay_plot(ui: &mut Ui, o: &Overlay, index: usize, width: f32) {
     Plot::new(("diagnosis overlay", index))
         .width(width)
         .height(HEIGHT)
-        .legend(Legend::default().follow_insertion_order(true))
         .x_axis_label(o.x_label.as_str())
         .y_axis_label("IAS amplitude [rpm]")
         .x_grid_spacer(grid_125)
-        .y_grid_spacer(grid_125)
         .include_y(0.0)
+        .allow_scroll(false)
         .label_formatter(|pos| Some(readout(o, pos)))
         .show(ui, |plot| {
             for (i, ((&x, &y), &s)) in o.x.iter().zip(&o.measured).zip(&o.sigma).enumerate() {

@@ -124,8 +124,10 @@ fn recordings_ui(app: &mut TorsimApp, ui: &mut Ui) {
     let roles = d.finished.as_ref().map(|f| f.report.recordings.clone());
     let mut remove = None;
     let busy = d.job.is_some();
+    // Open until a report arrives, then closed (each has its own open state).
     egui::CollapsingHeader::new(format!("Recordings ({})", d.recordings.len()))
-        .default_open(true)
+        .id_salt(("diagnosis recordings", roles.is_some()))
+        .default_open(roles.is_none())
         .show(ui, |ui| {
             egui::Grid::new("diagnosis recordings")
                 .striped(true)

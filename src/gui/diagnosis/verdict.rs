@@ -98,11 +98,7 @@ fn accept_ui(app: &mut TorsimApp, finished: &Finished, ui: &mut Ui) {
     {
         let before = std::mem::replace(&mut app.model, after.clone());
         app.commit(before);
-        app.diagnosis.message = format!(
-            "Accepted {}: {}.",
-            finished.report.verdict.effect,
-            finished.changes.join("; ")
-        );
+        app.diagnosis.message = format!("Accepted: {}.", finished.changes.join("; "));
         app.status = format!("accepted the diagnosis: {}", finished.report.verdict.effect);
     }
     if let Some(why) = why {

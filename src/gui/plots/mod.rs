@@ -165,6 +165,9 @@ pub fn central_ui(app: &mut TorsimApp, ui: &mut Ui) {
         ] {
             ui.selectable_value(&mut app.tab, tab, label);
         }
+        if app.tab == Tab::Diagnosis {
+            return;
+        }
         ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
             let available = match app.tab {
                 Tab::Campbell | Tab::Modes => app.results.campbell.is_some(),
