@@ -25,6 +25,8 @@ mod tests;
 #[cfg(test)]
 mod tests_diagnosis;
 #[cfg(test)]
+mod tests_diagnosis_run;
+#[cfg(test)]
 mod tests_edit;
 #[cfg(test)]
 mod tests_edit_cases;

@@ -1,11 +1,11 @@
 //! The diagnosis tab driven headless by egui_kittest: Diagnose is disabled without
 //! recordings; a finished report shows its verdict, candidates and Accept, and Accept
 //! puts the verdict into the model as one undo step; a real diagnosis of two recordings
-//! runs on its own thread with progress and comes back with a report.
+//! runs on its own thread with progress and comes back with a report
+//! ([`super::tests_diagnosis_run`]).
 
 use super::app::{Tab, TorsimApp};
 use super::diagnosis::finished::Finished;
-use super::diagnosis::load::Source;
 use egui_kittest::Harness;
 use egui_kittest::kittest::{NodeT, Queryable};
 use std::collections::BTreeMap;
@@ -21,7 +21,7 @@ fn bench() -> Model {
     parse_model(p.text, "diagnosis-bench").expect("model")
 }
 
-fn harness(model: Model) -> Harness<'static, TorsimApp> {
+pub(super) fn harness(model: Model) -> Harness<'static, TorsimApp> {
     Harness::builder()
         .with_size([1400.0, 1400.0])
         .build_eframe(move |cc| {
@@ -33,7 +33,7 @@ fn harness(model: Model) -> Harness<'static, TorsimApp> {
 }
 
 /// Steps the UI until `done` holds, at most `limit`.
-fn step_until(
+pub(super) fn step_until(
     h: &mut Harness<'static, TorsimApp>,
     limit: Duration,
     mut done: impl FnMut(&TorsimApp) -> bool,
@@ -229,54 +229,6 @@ fn none_and_an_edited_model_cannot_be_accepted() {
             .is_disabled()
     );
     h.get_by_label_contains("edited since this diagnosis");
-}
-
-/// The `none` case's regimes A and B (about 10 s in the dev profile): progress arrives
-/// with its stages, and the report comes back with its verdict.
-#[test]
-fn a_real_diagnosis_runs_off_the_gui_thread() {
-    let case = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/diagnosis/none");
-    let model = torsim::model::read_model_file(&case.join("model.toml")).expect("case model");
-    let mut h = harness(model.clone());
-    let paths = vec![case.join("regime-a.csv"), case.join("regime-b.csv")];
-    let ctx = h.ctx.clone();
-    let app = h.state_mut();
-    app.diagnosis.options.threads = 2;
-    app.diagnosis.add(Source::Paths(paths), &model, &ctx);
-    step_until(&mut h, Duration::from_secs(30), |a| {
-        a.diagnosis.recordings.len() == 2
-    });
-    assert!(h.state().diagnosis.load_errors.is_empty());
-    h.get_by_label("Regime A");
-    h.get_by_label("Diagnose").click();
-    h.step();
-    let mut stages: Vec<String> = Vec::new();
-    let mut fractions: Vec<f64> = Vec::new();
-    step_until(&mut h, Duration::from_secs(300), |a| {
-        if let Some(job) = &a.diagnosis.job
-            && stages.last() != Some(&job.stage)
-        {
-            stages.push(job.stage.clone());
-            fractions.push(job.fraction);
-        }
-        a.diagnosis.finished.is_some() || a.diagnosis.error.is_some()
-    });
-    let d = &h.state().diagnosis;
-    assert_eq!(d.error, None);
-    let finished = d.finished.as_ref().expect("report");
-    assert_eq!(finished.report.verdict.effect, "none");
-    assert_eq!(finished.report.recordings.len(), 2);
-    assert!(
-        stages.iter().any(|s| s.starts_with("fitting ")),
-        "{stages:?}"
-    );
-    assert!(fractions.windows(2).all(|w| w[0] <= w[1]), "{fractions:?}");
-    assert!(d.job.is_none());
-    assert_eq!(
-        h.get_all_by_label("none").count(),
-        2,
-        "the verdict and its row"
-    );
 }
 
 /// "Save report…" writes the page for a person atomically: the verdict is in it and no
