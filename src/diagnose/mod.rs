@@ -17,6 +17,7 @@
 //! - [`decide`]: held-out scoring with a parameter penalty and the verdict.
 //! - [`report`]: the JSON of the spec; [`html`] the page for a person.
 
+pub mod accept;
 pub mod candidates;
 pub mod decide;
 pub mod fit;

@@ -28,6 +28,8 @@ pub enum Tab {
     Response,
     /// Time traces of a steady run or a run-up, recordings.
     Traces,
+    /// Diagnosis of bench recordings against the model.
+    Diagnosis,
 }
 
 /// The latest results for the model on screen (the last good ones stay while an edit is
@@ -103,6 +105,8 @@ pub struct TorsimApp {
     pub close_prompt: bool,
     /// The user chose to discard unsaved edits and close.
     pub close_confirmed: bool,
+    /// The diagnosis tab: recordings, the run, the report.
+    pub diagnosis: super::diagnosis::DiagnosisState,
     worker: Worker,
 }
 
@@ -136,6 +140,7 @@ impl TorsimApp {
             files: files::FileDialogs::default(),
             close_prompt: false,
             close_confirmed: false,
+            diagnosis: Default::default(),
             worker: Worker::start(wake),
         };
         app.request();
@@ -335,6 +340,7 @@ impl eframe::App for TorsimApp {
         files::poll(self, ui.ctx());
         export::poll(self, ui.ctx());
         recordings::poll(self);
+        self.diagnosis.poll();
         ui.ctx()
             .send_viewport_cmd(egui::ViewportCommand::Title(self.title()));
         let undo = egui::KeyboardShortcut::new(egui::Modifiers::COMMAND, egui::Key::Z);

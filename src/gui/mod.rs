@@ -5,6 +5,7 @@
 
 pub mod app;
 pub mod decimate;
+pub mod diagnosis;
 pub mod editor;
 pub mod export;
 pub mod files;
@@ -21,6 +22,10 @@ pub mod worker;
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_diagnosis;
+#[cfg(test)]
+mod tests_diagnosis_run;
 #[cfg(test)]
 mod tests_edit;
 #[cfg(test)]

@@ -27,6 +27,7 @@ pub use crossing::crossing_response;
 pub use quantity::Quantity;
 #[cfg(test)]
 pub use quantity::matters;
+pub use series::{fmt, grid_125};
 
 use super::app::{Tab, TorsimApp};
 use egui::{Color32, Ui};
@@ -104,6 +105,7 @@ pub fn plot_data(app: &TorsimApp) -> Option<PlotData> {
         Tab::Modes => modes::plot_data(app),
         Tab::Response => response::plot_data(app),
         Tab::Traces => traces_data(app),
+        Tab::Diagnosis => None,
     }
 }
 
@@ -159,14 +161,19 @@ pub fn central_ui(app: &mut TorsimApp, ui: &mut Ui) {
             (Tab::Modes, "Mode shapes"),
             (Tab::Response, "Forced response"),
             (Tab::Traces, "Time traces"),
+            (Tab::Diagnosis, "Diagnosis"),
         ] {
             ui.selectable_value(&mut app.tab, tab, label);
+        }
+        if app.tab == Tab::Diagnosis {
+            return;
         }
         ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
             let available = match app.tab {
                 Tab::Campbell | Tab::Modes => app.results.campbell.is_some(),
                 Tab::Response => app.results.response.is_some(),
                 Tab::Traces => app.results.live.is_some(),
+                Tab::Diagnosis => false,
             };
             let button = ui
                 .add_enabled(available, egui::Button::new("Export CSV…"))
@@ -183,6 +190,7 @@ pub fn central_ui(app: &mut TorsimApp, ui: &mut Ui) {
         Tab::Campbell | Tab::Modes => "modes",
         Tab::Response => "response",
         Tab::Traces => "trace",
+        Tab::Diagnosis => "diagnosis",
     };
     if let Some(e) = app.error_of(panel) {
         ui.colored_label(ui.visuals().error_fg_color, format!("Failed: {e}"));
@@ -192,5 +200,6 @@ pub fn central_ui(app: &mut TorsimApp, ui: &mut Ui) {
         Tab::Modes => modes::modes_ui(app, ui),
         Tab::Response => response::response_ui(app, ui),
         Tab::Traces => traces::traces_ui(app, ui),
+        Tab::Diagnosis => super::diagnosis::diagnosis_ui(app, ui),
     }
 }

@@ -1,0 +1,109 @@
+//! A diagnosis runs on its own thread (`torsim-diagnose`), as the simulation thread does
+//! its work (`super::super::worker`): the GUI thread only starts it and takes its
+//! messages. Each run has an id (its generation): messages of an older run are dropped.
+//! The progress callback sends the fraction and stage, wakes the GUI
+//! (`request_repaint`) and returns false once Cancel set the flag, which ends the run at
+//! its next step. The verdict's model ([`Finished`]) is built on the thread too.
+
+use super::finished::Finished;
+use crossbeam_channel::{Receiver, unbounded};
+use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, Ordering};
+use torsim::diagnose::{DiagnoseError, DiagnoseOptions, LabelledRecording, diagnose};
+use torsim::model::Model;
+
+/// What the diagnosis thread sends.
+pub enum JobMessage {
+    /// Run `0` is at fraction `1` (0–1) of stage `2` (`"fitting gear_backlash at gearbox"`).
+    Progress(u64, f64, String),
+    /// Run `0` ended: the report with its accepted model, or why not.
+    Done(u64, Result<Box<Finished>, DiagnoseError>),
+}
+
+/// A diagnosis in progress.
+pub struct Job {
+    /// Its id.
+    pub id: u64,
+    /// Fraction done, 0–1.
+    pub fraction: f64,
+    /// Stage, for a person.
+    pub stage: String,
+    /// Set by Cancel; the thread stops at its next step.
+    cancel: Arc<AtomicBool>,
+    /// Messages from the thread.
+    messages: Receiver<JobMessage>,
+}
+
+impl Job {
+    /// Starts diagnosing `recordings` against `model` on a new thread.
+    pub fn start(
+        id: u64,
+        model: Model,
+        recordings: Vec<LabelledRecording>,
+        options: DiagnoseOptions,
+        ctx: &egui::Context,
+    ) -> Result<Self, String> {
+        let (tx, messages) = unbounded();
+        let cancel = Arc::new(AtomicBool::new(false));
+        let (flag, ctx) = (cancel.clone(), ctx.clone());
+        std::thread::Builder::new()
+            .name("torsim-diagnose".into())
+            .spawn(move || {
+                let mut progress = |fraction: f64, stage: &str| {
+                    let _ = tx.send(JobMessage::Progress(id, fraction, stage.to_string()));
+                    ctx.request_repaint();
+                    !flag.load(Ordering::SeqCst)
+                };
+                let result = diagnose(&model, &recordings, &options, &mut progress)
+                    .map(|report| Box::new(Finished::new(model, report)));
+                let _ = tx.send(JobMessage::Done(id, result));
+                ctx.request_repaint();
+            })
+            .map_err(|e| format!("cannot start the diagnosis: {e}"))?;
+        Ok(Self {
+            id,
+            fraction: 0.0,
+            stage: "starting".into(),
+            cancel,
+            messages,
+        })
+    }
+
+    /// Asks the thread to stop at its next step.
+    pub fn cancel(&self) {
+        self.cancel.store(true, Ordering::SeqCst);
+    }
+
+    /// True once Cancel was pressed.
+    pub fn cancelling(&self) -> bool {
+        self.cancel.load(Ordering::SeqCst)
+    }
+
+    /// Takes the thread's messages: progress updates this job, the end is returned
+    /// (`Err(Cancelled)` also when the thread died without an answer).
+    pub fn poll(&mut self) -> Option<Result<Box<Finished>, DiagnoseError>> {
+        loop {
+            match self.messages.try_recv() {
+                Ok(JobMessage::Progress(id, f, stage)) if id == self.id => {
+                    self.fraction = f;
+                    self.stage = stage;
+                }
+                Ok(JobMessage::Done(id, result)) if id == self.id => return Some(result),
+                Ok(_) => {}
+                Err(crossbeam_channel::TryRecvError::Empty) => return None,
+                Err(crossbeam_channel::TryRecvError::Disconnected) => {
+                    return Some(Err(DiagnoseError::Input(
+                        "the diagnosis thread ended without an answer".into(),
+                    )));
+                }
+            }
+        }
+    }
+}
+
+impl Drop for Job {
+    /// A window closed mid-run stops the thread at its next step (not waited for).
+    fn drop(&mut self) {
+        self.cancel();
+    }
+}

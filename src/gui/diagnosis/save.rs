@@ -1,0 +1,76 @@
+//! "Save report…": asks where (rfd), renders the page for a person
+//! (`torsim::diagnose::report_html`) and writes it atomically — a temporary file in the
+//! same folder, renamed over the target once complete — all on its own thread.
+
+use crossbeam_channel::{Receiver, TryRecvError, bounded};
+use std::io::Write as _;
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+use torsim::diagnose::{Report, report_html};
+
+/// How a save ended: `None` when the dialog was cancelled.
+pub type Outcome = Option<Result<PathBuf, String>>;
+
+/// A save in progress.
+pub struct Saving(Receiver<Outcome>);
+
+impl Saving {
+    /// Asks where to save `report` (of the model named `model_name`) and writes it.
+    pub fn start(report: Arc<Report>, model_name: String, ctx: &egui::Context) -> Self {
+        let (tx, rx) = bounded(1);
+        let ctx = ctx.clone();
+        let spawned = std::thread::Builder::new()
+            .name("torsim-diagnosis-save".into())
+            .spawn(move || {
+                let outcome = rfd::FileDialog::new()
+                    .set_title("Save the diagnosis report")
+                    .add_filter("HTML page", &["html"])
+                    .set_file_name("diagnosis.html")
+                    .save_file()
+                    .map(|path| write_page(&path, &report, &model_name));
+                let _ = tx.send(outcome);
+                ctx.request_repaint();
+            });
+        if let Err(e) = spawned {
+            let (tx, failed) = bounded(1);
+            let _ = tx.send(Some(Err(format!("cannot open the file dialog: {e}"))));
+            return Self(failed);
+        }
+        Self(rx)
+    }
+
+    /// The outcome once the thread is done (`Some(None)`: cancelled).
+    pub fn poll(&mut self) -> Option<Outcome> {
+        match self.0.try_recv() {
+            Ok(outcome) => Some(outcome),
+            Err(TryRecvError::Empty) => None,
+            Err(TryRecvError::Disconnected) => {
+                Some(Some(Err("the save thread ended without an answer".into())))
+            }
+        }
+    }
+}
+
+/// Renders the page and writes it to `path`.
+pub fn write_page(path: &Path, report: &Report, model_name: &str) -> Result<PathBuf, String> {
+    write_atomic(path, &report_html(report, model_name)).map(|()| path.to_path_buf())
+}
+
+/// Writes `text` to `path` atomically, or not at all.
+pub fn write_atomic(path: &Path, text: &str) -> Result<(), String> {
+    let name = path.file_name().map_or_else(
+        || "report.html".into(),
+        |n| n.to_string_lossy().into_owned(),
+    );
+    let tmp = path.with_file_name(format!(".{name}.{}.tmp", std::process::id()));
+    let result = (|| {
+        let mut f = std::fs::File::create(&tmp)?;
+        f.write_all(text.as_bytes())?;
+        f.sync_all()?;
+        std::fs::rename(&tmp, path)
+    })();
+    result.map_err(|e| {
+        let _ = std::fs::remove_file(&tmp);
+        format!("could not write {}: {e}", path.display())
+    })
+}

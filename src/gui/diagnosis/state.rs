@@ -1,0 +1,131 @@
+//! What the diagnosis tab holds across frames: the recordings, the run in progress, the
+//! finished report, and the file threads (adding recordings, saving the report).
+
+use super::finished::Finished;
+use super::job::Job;
+use super::load::{self, Loaded, LoadedRecording, Source};
+use super::save::Saving;
+use crossbeam_channel::{Receiver, TryRecvError};
+use torsim::diagnose::{DiagnoseError, DiagnoseOptions, LabelledRecording};
+use torsim::model::Model;
+
+/// The diagnosis tab's state.
+#[derive(Default)]
+pub struct DiagnosisState {
+    /// The recordings to diagnose, in the order added.
+    pub recordings: Vec<LoadedRecording>,
+    /// Files that could not be added, with file and line.
+    pub load_errors: Vec<String>,
+    /// A loading thread (dialog and reading).
+    loading: Option<Receiver<Loaded>>,
+    /// Settings of the diagnosis (threads: the machine's cores, at most 8).
+    pub options: DiagnoseOptions,
+    /// The run in progress.
+    pub job: Option<Job>,
+    /// Id of the last run started.
+    last_id: u64,
+    /// The last finished diagnosis.
+    pub finished: Option<Finished>,
+    /// Why the last run ended without a report (`"cancelled"` included).
+    pub error: Option<String>,
+    /// The report being saved.
+    pub saving: Option<Saving>,
+    /// The outcome of the last accept or save, for a person.
+    pub message: String,
+}
+
+impl DiagnosisState {
+    /// True while recordings are being picked or read.
+    pub fn loading(&self) -> bool {
+        self.loading.is_some()
+    }
+
+    /// Adds recordings from `source`, read against the nodes of `model` off the GUI
+    /// thread.
+    pub fn add(&mut self, source: Source, model: &Model, ctx: &egui::Context) {
+        let nodes = model.inertias.iter().map(|n| n.name.clone()).collect();
+        let have = self.recordings.iter().map(|r| r.path.clone()).collect();
+        match load::start(source, nodes, have, ctx) {
+            Ok(rx) => self.loading = Some(rx),
+            Err(e) => self.load_errors = vec![e],
+        }
+    }
+
+    /// Removes the `index`-th recording.
+    pub fn remove(&mut self, index: usize) {
+        if index < self.recordings.len() {
+            self.recordings.remove(index);
+        }
+    }
+
+    /// Starts diagnosing the recordings against `model` (a run in progress is cancelled).
+    pub fn start(&mut self, model: &Model, ctx: &egui::Context) {
+        if self.recordings.is_empty() {
+            return;
+        }
+        self.last_id += 1;
+        let recordings: Vec<LabelledRecording> =
+            self.recordings.iter().map(|r| r.labelled.clone()).collect();
+        self.error = None;
+        self.message.clear();
+        match Job::start(
+            self.last_id,
+            model.clone(),
+            recordings,
+            self.options.clone(),
+            ctx,
+        ) {
+            Ok(job) => self.job = Some(job),
+            Err(e) => self.error = Some(e),
+        }
+    }
+
+    /// Shows `finished` as the latest diagnosis.
+    pub fn show(&mut self, finished: Finished) {
+        self.finished = Some(finished);
+        self.error = None;
+    }
+
+    /// Takes what the threads sent.
+    pub fn poll(&mut self) {
+        if let Some(rx) = &self.loading {
+            match rx.try_recv() {
+                Ok((added, errors)) => {
+                    self.loading = None;
+                    self.load_errors = errors;
+                    for mut r in added {
+                        let taken: Vec<&str> = self
+                            .recordings
+                            .iter()
+                            .map(|x| x.labelled.label.as_str())
+                            .collect();
+                        r.labelled.label = load::unique_label(&r.labelled.label, &r.path, &taken);
+                        self.recordings.push(r);
+                    }
+                }
+                Err(TryRecvError::Empty) => {}
+                Err(TryRecvError::Disconnected) => {
+                    self.loading = None;
+                    self.load_errors = vec!["reading the recordings failed".into()];
+                }
+            }
+        }
+        if let Some(result) = self.job.as_mut().and_then(Job::poll) {
+            self.job = None;
+            match result {
+                Ok(finished) => self.show(*finished),
+                Err(DiagnoseError::Cancelled) => self.error = Some("cancelled".into()),
+                Err(e) => self.error = Some(e.to_string()),
+            }
+        }
+        if let Some(outcome) = self.saving.as_mut().and_then(Saving::poll) {
+            self.saving = None;
+            if let Some(outcome) = outcome {
+                self.message = match outcome {
+                    Ok(path) => format!("saved the report to {}", path.display()),
+                    Err(e) => e,
+                };
+            }
+        }
+    }
+}
