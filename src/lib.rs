@@ -60,6 +60,7 @@
 pub mod check;
 pub mod compare;
 pub mod diagnose;
+pub mod files;
 pub mod modal;
 pub mod model;
 pub mod physics;

@@ -10,7 +10,6 @@ use super::error::CliError;
 use super::format::{emit, outln, print_json, table};
 use super::input::load_model;
 use super::progress::Progress;
-use std::io::Write as _;
 use std::path::{Path, PathBuf};
 use torsim::diagnose::report::ParameterValue;
 use torsim::diagnose::{
@@ -108,21 +107,8 @@ fn read_all(paths: &[String], nodes: &[String]) -> Result<Vec<LabelledRecording>
 /// Writes `text` to `path` atomically: a temporary file in the same directory, renamed
 /// over the target once complete.
 fn write_atomic(path: &Path, text: &str) -> Result<(), CliError> {
-    let name = path.file_name().map_or_else(
-        || "report.html".into(),
-        |n| n.to_string_lossy().into_owned(),
-    );
-    let tmp = path.with_file_name(format!(".{name}.{}.tmp", std::process::id()));
-    let result = (|| {
-        let mut f = std::fs::File::create(&tmp)?;
-        f.write_all(text.as_bytes())?;
-        f.sync_all()?;
-        std::fs::rename(&tmp, path)
-    })();
-    result.map_err(|e| {
-        let _ = std::fs::remove_file(&tmp);
-        CliError::input(anyhow::anyhow!("{}: cannot write: {e}", path.display()))
-    })
+    torsim::files::write_atomic(path, text)
+        .map_err(|e| CliError::input(anyhow::anyhow!("{}: cannot write: {e}", path.display())))
 }
 
 /// Runs the command.

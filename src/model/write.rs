@@ -3,7 +3,6 @@
 //! [`Model`]. Keys equal to their defaults are left out; floats are written in Rust's
 //! shortest round-trip form, so they parse back bit-identical.
 
-use std::io::Write;
 use std::path::Path;
 
 use super::{
@@ -51,22 +50,7 @@ pub fn to_toml_string(model: &Model) -> String {
 /// Writes the model file atomically: a temporary file in the same directory, renamed
 /// over `path` once it is complete.
 pub fn save_model_file(model: &Model, path: &Path) -> std::io::Result<()> {
-    let file_name = path
-        .file_name()
-        .map_or_else(|| "model.toml".into(), |n| n.to_string_lossy().into_owned());
-    let tmp = path.with_file_name(format!(".{file_name}.{}.tmp", std::process::id()));
-    let result = (|| {
-        let mut file = std::fs::File::create(&tmp)?;
-        file.write_all(to_toml_string(model).as_bytes())?;
-        file.sync_all()?;
-        drop(file);
-        std::fs::rename(&tmp, path)
-    })();
-    if result.is_err() {
-        // Best effort: the temporary file may not even exist.
-        let _ = std::fs::remove_file(&tmp);
-    }
-    result
+    crate::files::write_atomic(path, &to_toml_string(model))
 }
 
 /// `key = value` on its own line.

@@ -3,7 +3,6 @@
 //! shortest round-trip form, so [`read_recording`](super::read_recording) reads them back
 //! bit-identical; non-finite samples are refused (an output file never holds NaN).
 
-use std::io::Write;
 use std::path::Path;
 
 use super::error::{Reason, RecordingError};
@@ -70,20 +69,11 @@ pub fn csv_string(recording: &Recording) -> String {
 
 /// Writes `text` to `path` atomically.
 fn write_atomic(path: &Path, text: &str) -> Result<(), RecordingError> {
-    let file = path.display().to_string();
-    let name = path
-        .file_name()
-        .map_or_else(|| "recording".into(), |n| n.to_string_lossy().into_owned());
-    let tmp = path.with_file_name(format!(".{name}.{}.tmp", std::process::id()));
-    let result = (|| {
-        let mut f = std::fs::File::create(&tmp)?;
-        f.write_all(text.as_bytes())?;
-        f.sync_all()?;
-        std::fs::rename(&tmp, path)
-    })();
-    result.map_err(|e| {
-        let _ = std::fs::remove_file(&tmp);
-        RecordingError::new(file, Reason::Io(format!("cannot write: {e}")))
+    crate::files::write_atomic(path, text).map_err(|e| {
+        RecordingError::new(
+            path.display().to_string(),
+            Reason::Io(format!("cannot write: {e}")),
+        )
     })
 }
 

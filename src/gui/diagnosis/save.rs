@@ -3,7 +3,6 @@
 //! same folder, renamed over the target once complete — all on its own thread.
 
 use crossbeam_channel::{Receiver, TryRecvError, bounded};
-use std::io::Write as _;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 use torsim::diagnose::{Report, report_html};
@@ -58,19 +57,6 @@ pub fn write_page(path: &Path, report: &Report, model_name: &str) -> Result<Path
 
 /// Writes `text` to `path` atomically, or not at all.
 pub fn write_atomic(path: &Path, text: &str) -> Result<(), String> {
-    let name = path.file_name().map_or_else(
-        || "report.html".into(),
-        |n| n.to_string_lossy().into_owned(),
-    );
-    let tmp = path.with_file_name(format!(".{name}.{}.tmp", std::process::id()));
-    let result = (|| {
-        let mut f = std::fs::File::create(&tmp)?;
-        f.write_all(text.as_bytes())?;
-        f.sync_all()?;
-        std::fs::rename(&tmp, path)
-    })();
-    result.map_err(|e| {
-        let _ = std::fs::remove_file(&tmp);
-        format!("could not write {}: {e}", path.display())
-    })
+    torsim::files::write_atomic(path, text)
+        .map_err(|e| format!("could not write {}: {e}", path.display()))
 }
