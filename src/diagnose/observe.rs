@@ -154,6 +154,8 @@ pub fn observe(
         observations: Vec::new(),
         sample_noise_rpm: Vec::new(),
     };
+    // Run-ups wait for the sample noise of the steady runs: `(run, analysis)`.
+    let mut run_ups: Vec<(usize, Analysis)> = Vec::new();
     for (i, lr) in recordings.iter().enumerate() {
         let fail = |message: String| DiagnoseError::Analysis {
             label: lr.label.clone(),
@@ -195,24 +197,19 @@ pub fn observe(
                 run.regime = Regime::LongRun {
                     speed_rpm: reference_speed,
                 };
-                let block = duration / LONG_RUN_BLOCKS as f64;
-                run.cycle_speeds_rpm = (0..LONG_RUN_BLOCKS)
-                    .map(|b| {
-                        let part = slice(rec, b as f64 * block, (b + 1) as f64 * block);
-                        cycle_speeds(&part, &analysis.reference, analysis.cycle_rev)
-                    })
-                    .collect();
-                long_run(&mut observed, i, rec, duration, &options).map_err(fail)?
+                let (noise, cycles) =
+                    long_run(&mut observed, i, rec, duration, &options).map_err(fail)?;
+                run.cycle_speeds_rpm = cycles;
+                noise
             }
             RunKind::Steady => {
                 run.cycle_speeds_rpm =
                     vec![cycle_speeds(rec, &analysis.reference, analysis.cycle_rev)];
-                let noise = steady_noise(rec, duration, &options, &stations).map_err(fail)?;
+                let noise = steady_noise(rec, duration, &options, &analysis).map_err(fail)?;
                 push_steady(&mut observed, i, 0, &analysis, &noise, duration / 2.0);
                 noise
                     .iter()
-                    .zip(&analysis.stations)
-                    .map(|(s, _)| sample_noise(*s, rec.time_s.len()))
+                    .map(|s| sample_noise(*s, rec.time_s.len()))
                     .collect()
             }
             RunKind::RunUp => {
@@ -227,6 +224,7 @@ pub fn observe(
                     to_rpm: to,
                 };
                 run.window_speeds_rpm = speeds;
+                run_ups.push((i, analysis));
                 Vec::new()
             }
         };
@@ -234,15 +232,7 @@ pub fn observe(
         observed.sample_noise_rpm.push(noise);
     }
     // Run-ups take the sample noise of the steady runs (median per station).
-    for (i, lr) in recordings.iter().enumerate() {
-        if !matches!(observed.runs[i].regime, Regime::RunUp { .. }) {
-            continue;
-        }
-        let analysis =
-            analyse_with(&lr.recording, &options).map_err(|e| DiagnoseError::Analysis {
-                label: lr.label.clone(),
-                message: e.to_string(),
-            })?;
+    for (i, analysis) in run_ups {
         let noise: Vec<f64> = observed.runs[i]
             .stations
             .iter()
@@ -332,12 +322,13 @@ fn push_steady(
     }
 }
 
-/// σ of each station's order amplitudes from the scatter over [`PARTS`] parts.
+/// σ of each station's order amplitudes from the scatter over [`PARTS`] parts (`whole`:
+/// the analysis of all of `rec`).
 fn steady_noise(
     rec: &Recording,
     duration: f64,
     options: &AnalysisOptions,
-    stations: &[String],
+    whole: &Analysis,
 ) -> Result<Vec<f64>, String> {
     let parts: Vec<Analysis> = (0..PARTS)
         .map(|k| {
@@ -348,11 +339,8 @@ fn steady_noise(
             analyse_with(&slice(rec, a, b), options).map_err(|e| e.to_string())
         })
         .collect::<Result<_, _>>()?;
-    let whole = analyse_with(rec, options).map_err(|e| e.to_string())?;
-    Ok(stations
-        .iter()
-        .enumerate()
-        .map(|(s, _)| {
+    Ok((0..whole.stations.len())
+        .map(|s| {
             let Some(first) = parts[0].stations.get(s) else {
                 return f64::NAN;
             };
@@ -390,21 +378,23 @@ fn steady_noise(
         .collect())
 }
 
-/// The blocks of a long run; returns the sample noise per station.
+/// The blocks of a long run; returns the sample noise per station and the cycle speeds
+/// of each block.
 fn long_run(
     observed: &mut Observed,
     run: usize,
     rec: &Recording,
     duration: f64,
     options: &AnalysisOptions,
-) -> Result<Vec<f64>, String> {
+) -> Result<(Vec<f64>, Vec<Vec<f64>>), String> {
     let block = duration / LONG_RUN_BLOCKS as f64;
     let mut noise_sum: Vec<f64> = Vec::new();
+    let mut cycles = Vec::with_capacity(LONG_RUN_BLOCKS);
     for b in 0..LONG_RUN_BLOCKS {
         let part = slice(rec, b as f64 * block, (b + 1) as f64 * block);
         let analysis = analyse_with(&part, options).map_err(|e| e.to_string())?;
-        let stations: Vec<String> = analysis.stations.iter().map(|s| s.name.clone()).collect();
-        let noise = steady_noise(&part, block, options, &stations)?;
+        cycles.push(cycle_speeds(&part, &analysis.reference, analysis.cycle_rev));
+        let noise = steady_noise(&part, block, options, &analysis)?;
         push_steady(
             observed,
             run,
@@ -418,7 +408,7 @@ fn long_run(
             *acc += sample_noise(*s, part.time_s.len()) / LONG_RUN_BLOCKS as f64;
         }
     }
-    Ok(noise_sum)
+    Ok((noise_sum, cycles))
 }
 
 /// The measured ramp of a run-up: speed at the first and last sample (a straight line

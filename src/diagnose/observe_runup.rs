@@ -12,6 +12,20 @@ const HANN_ENBW: f64 = 1.5;
 /// Fewest windows a bin needs.
 const MIN_WINDOWS: usize = 2;
 
+/// Per bin, `sum / count`, or `NaN` for a bin with fewer than [`MIN_WINDOWS`] windows.
+fn bin_means(sum: &[f64], count: &[usize]) -> Vec<f64> {
+    sum.iter()
+        .zip(count)
+        .map(|(s, c)| {
+            if *c >= MIN_WINDOWS {
+                s / *c as f64
+            } else {
+                f64::NAN
+            }
+        })
+        .collect()
+}
+
 /// The bin of each window (`None` below the first full bin), and the bins' mean speeds.
 pub fn bins(window_speeds_rpm: &[f64]) -> (Vec<Option<usize>>, Vec<f64>) {
     let lo = window_speeds_rpm
@@ -35,18 +49,7 @@ pub fn bins(window_speeds_rpm: &[f64]) -> (Vec<Option<usize>>, Vec<f64>) {
             count[*b] += 1;
         }
     }
-    let speeds = sum
-        .iter()
-        .zip(&count)
-        .map(|(s, c)| {
-            if *c >= MIN_WINDOWS {
-                s / *c as f64
-            } else {
-                f64::NAN
-            }
-        })
-        .collect();
-    (index, speeds)
+    (index, bin_means(&sum, &count))
 }
 
 /// Per station (in `analysis` order), order and bin: the mean track amplitude over the
@@ -81,16 +84,7 @@ pub fn bin_tracks(
                             sum[*b] += a;
                         }
                     }
-                    sum.iter()
-                        .zip(&count)
-                        .map(|(s, c)| {
-                            if *c >= MIN_WINDOWS {
-                                s / *c as f64
-                            } else {
-                                f64::NAN
-                            }
-                        })
-                        .collect()
+                    bin_means(&sum, &count)
                 })
                 .collect()
         })

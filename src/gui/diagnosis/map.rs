@@ -6,6 +6,7 @@
 //! hover read-out lists every cell under the pointer.
 
 use super::finished::sig4;
+use crate::gui::plots::colour_scale::gradient_bar;
 use egui::{Align2, Color32, Rect, Sense, Stroke, Ui, Vec2};
 use egui_plot::{HoverPosition, Plot, PlotPoints, Polygon};
 use torsim::diagnose::Report;
@@ -196,17 +197,7 @@ fn scale_ui(ui: &mut Ui) {
         rect.min + Vec2::new(6.0, 56.0),
         rect.min + Vec2::new(20.0, height - 40.0),
     );
-    let steps = 80;
-    for i in 0..steps {
-        let u0 = i as f32 / steps as f32;
-        let u1 = (i + 1) as f32 / steps as f32;
-        let r = Rect::from_x_y_ranges(
-            bar.x_range(),
-            bar.bottom() - u1 * bar.height()..=bar.bottom() - u0 * bar.height(),
-        );
-        let z = (f64::from(u0 + 0.5 / steps as f32) * 2.0 - 1.0) * Z_CLAMP;
-        painter.rect_filled(r, 0.0, z_colour(z));
-    }
+    gradient_bar(&painter, bar, 80, &|u| z_colour((u * 2.0 - 1.0) * Z_CLAMP));
     let text = ui.visuals().text_color();
     let weak = ui.visuals().weak_text_color();
     let font = egui::TextStyle::Small.resolve(ui.style());

@@ -5,7 +5,7 @@
 
 mod animation;
 mod campbell;
-mod colour_scale;
+pub mod colour_scale;
 mod crossing;
 mod modes;
 mod order_tracks;
