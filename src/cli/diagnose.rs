@@ -289,6 +289,7 @@ mod tests {
             residual_fitted: 1.0,
             parameter_count: 1,
             signature: String::new(),
+            verified: true,
         };
         let mismatch = |z: f64| Mismatch {
             recording: "Regime A".into(),
@@ -325,6 +326,7 @@ mod tests {
             overlays: vec![],
             recordings: vec![],
             noise_rpm: 0.05,
+            not_fitted: Vec::new(),
             elapsed_s: 3.0,
         }
     }

@@ -172,6 +172,7 @@ mod tests {
                 residual_fitted: 1.0,
                 parameter_count: 1,
                 signature: String::new(),
+                verified: true,
             }],
             fit: Fit {
                 metric: String::new(),
@@ -183,6 +184,7 @@ mod tests {
             unexplained_resonances: vec![],
             overlays: vec![],
             recordings: vec![],
+            not_fitted: vec![],
             noise_rpm: 0.01,
             elapsed_s: 1.0,
         }

@@ -5,42 +5,56 @@
 //! amplitudes. Then:
 //! - `none` when the user's model already fits the held-out data within the noise
 //!   (χ²/N ≤ [`NONE_CHI2`]);
-//! - an effect when its score beats the plain-parameter fit's by [`EFFECT_MARGIN`]
+//! - an effect (one verified in the time domain, [`super::screen`]) when its score beats
+//!   the plain-parameter fit's by [`EFFECT_MARGIN`]
 //!   (relative) — new physics must earn its place on data the fit did not see;
 //! - otherwise `parameter_error`, naming the plain parameter the fit moved most.
 
-use super::candidates::Candidate;
+use super::context::{Context, Evaluated};
 use super::holdout::{held_out_labels, roles};
 use super::observe::Regime;
 use super::report::*;
-use super::run::{Context, Evaluated};
+use super::screen::Screened;
 use std::collections::BTreeMap;
 
 /// Held-out χ²/N under which the user's model is taken to fit.
 pub const NONE_CHI2: f64 = 2.0;
 /// An effect must lower the plain fit's score by this fraction. On the shipped controls
-/// the best effect gains at most 6 % over the plain fit (`parameter_error`) and nothing
-/// over the user's model (`none`); the weakest real effect gains 17 %.
+/// the best effect gains at most 3 % over the plain fit (`parameter_error`); the weakest
+/// real effect named right gains 57 % (hysteretic damping).
 pub const EFFECT_MARGIN: f64 = 0.15;
 
 fn number(x: f64) -> ParameterValue {
     ParameterValue::Number(x)
 }
 
-/// The report of a finished diagnosis.
+/// The score of `e` with `k` fitted parameters: held-out χ²/N + `k·ln(n)/n`.
+pub fn score(cx: &Context, e: &Evaluated, k: usize) -> f64 {
+    let n = cx.n_fitted() as f64;
+    cx.chi2(e, true) + k as f64 * n.ln() / n
+}
+
+/// The same on the fitted observations: what a screening may rank by (the held-out ones
+/// are kept for the verdict).
+pub fn fitted_score(cx: &Context, e: &Evaluated, k: usize) -> f64 {
+    let n = cx.n_fitted() as f64;
+    cx.chi2(e, false) + k as f64 * n.ln() / n
+}
+
+/// The report of a finished diagnosis: `screened` are the candidates fitted (only the
+/// verified ones can be the verdict), `not_fitted` those left out and why.
 pub fn report(
     cx: &Context,
     baseline: &Evaluated,
     plain: &Evaluated,
-    fitted: &[(Candidate, Evaluated)],
+    screened: &[Screened],
+    not_fitted: &[(String, String)],
     single: Option<(usize, f64, f64)>,
     elapsed_s: f64,
 ) -> Report {
-    let n_fit = cx.held_out.iter().filter(|h| !**h).count().max(1) as f64;
-    let penalty = |k: usize| k as f64 * n_fit.ln() / n_fit;
     let k_plain = cx.plain.len();
     let before = cx.chi2(baseline, true);
-    let plain_score = cx.chi2(plain, true) + penalty(k_plain);
+    let plain_score = score(cx, plain, k_plain);
     let mut candidates: Vec<Candidate_> = Vec::new();
     let plain_params: BTreeMap<String, ParameterValue> = cx
         .plain
@@ -48,7 +62,8 @@ pub fn report(
         .zip(&plain.factors)
         .map(|(p, f)| (format!("scale.{}", p.name), number(*f)))
         .collect();
-    for (c, e) in fitted {
+    for s in screened {
+        let (c, e) = (&s.candidate, &s.evaluated);
         let mut parameters = plain_params.clone();
         for (k, v) in &c.fixed {
             parameters.insert((*k).to_string(), ParameterValue::Text(v.clone()));
@@ -64,18 +79,24 @@ pub fn report(
             out: super::report::Candidate {
                 effect: c.effect.to_string(),
                 parameters,
-                score: cx.chi2(e, true) + penalty(k_plain + 1),
+                score: score(cx, e, k_plain + 1),
                 residual_before: before,
                 residual_after: cx.chi2(e, true),
                 residual_fitted: cx.chi2(e, false),
                 parameter_count: k_plain + 1,
-                signature: c.name(),
+                signature: format!("{}: {}", c.name(), s.note),
+                verified: s.verified,
             },
             evaluated: e,
         });
     }
-    // Keep the best place of each effect.
-    candidates.sort_by(|a, b| a.out.score.total_cmp(&b.out.score));
+    // Keep the best place of each effect, a verified one before any only screened.
+    let rank = |a: &super::report::Candidate, b: &super::report::Candidate| {
+        b.verified
+            .cmp(&a.verified)
+            .then(a.score.total_cmp(&b.score))
+    };
+    candidates.sort_by(|a, b| rank(&a.out, &b.out));
     let mut seen = Vec::new();
     candidates.retain(|c| {
         let new = !seen.contains(&c.out.effect);
@@ -91,6 +112,7 @@ pub fn report(
         residual_fitted: cx.chi2(plain, false),
         parameter_count: k_plain,
         signature: "plain parameters only".into(),
+        verified: true,
     };
     let none_row = super::report::Candidate {
         effect: "none".into(),
@@ -101,8 +123,9 @@ pub fn report(
         residual_fitted: cx.chi2(baseline, false),
         parameter_count: 0,
         signature: "the user's model as it is".into(),
+        verified: true,
     };
-    let best = candidates.first();
+    let best = candidates.first().filter(|c| c.out.verified);
     let (verdict, after_model): (Verdict, &Evaluated) = if before <= NONE_CHI2 {
         (
             Verdict {
@@ -125,6 +148,7 @@ pub fn report(
         }
         let runner_up = candidates
             .get(1)
+            .filter(|c| c.out.verified)
             .map_or(plain_score, |c| c.out.score.min(plain_score));
         (
             Verdict {
@@ -164,7 +188,10 @@ pub fn report(
             parameters.insert("user_value".into(), number(v));
             parameters.insert("fitted_value".into(), number(v * f));
         }
-        let second = candidates.first().map_or(f64::INFINITY, |c| c.out.score);
+        let second = candidates
+            .first()
+            .filter(|c| c.out.verified)
+            .map_or(f64::INFINITY, |c| c.out.score);
         (
             Verdict {
                 effect: "parameter_error".into(),
@@ -185,7 +212,7 @@ pub fn report(
         candidates.iter().map(|c| c.out.clone()).collect();
     rows.push(plain_row);
     rows.push(none_row);
-    rows.sort_by(|a, b| a.score.total_cmp(&b.score));
+    rows.sort_by(rank);
     if let Some(i) = rows.iter().position(|r| r.effect == verdict.effect) {
         let r = rows.remove(i);
         rows.insert(0, r);
@@ -199,6 +226,13 @@ pub fn report(
         rows,
         before,
         after,
+        not_fitted
+            .iter()
+            .map(|(candidate, reason)| NotFitted {
+                candidate: candidate.clone(),
+                reason: reason.clone(),
+            })
+            .collect(),
         elapsed_s,
     )
 }

@@ -39,14 +39,21 @@ fn to_external(u: f64, b: &Bounds) -> f64 {
     x.clamp(b.lo, b.hi)
 }
 
+/// A residual function: `None` where the model cannot be evaluated.
+pub type Residuals<'a> = &'a (dyn Fn(&[f64]) -> Option<Vec<f64>> + Sync);
+
 /// Minimizes `Σ r(x)²` from `start` within `bounds` in at most `max_iterations`
-/// Levenberg–Marquardt steps. `residuals` returns `None` where the model cannot be
-/// evaluated (the step is then refused, as one that does not improve).
+/// Levenberg–Marquardt steps, stopping when a step gains less than `tolerance` of the
+/// cost. `residuals` returns `None` where the model cannot be evaluated (the step is then
+/// refused, as one that does not improve). The Jacobian's columns are evaluated on up to
+/// `threads` threads.
 pub fn levenberg_marquardt(
     start: &[f64],
     bounds: &[Bounds],
     max_iterations: usize,
-    residuals: &mut dyn FnMut(&[f64]) -> Option<Vec<f64>>,
+    tolerance: f64,
+    threads: usize,
+    residuals: Residuals,
 ) -> Option<FitResult> {
     let n = start.len();
     let mut u: Vec<f64> = start
@@ -67,16 +74,19 @@ pub fn levenberg_marquardt(
     for _ in 0..max_iterations {
         // Forward differences: a relative step in the internal coordinate.
         let mut jac = DMatrix::<f64>::zeros(r.len(), n);
-        for j in 0..n {
-            let h = 1e-3 * u[j].abs().max(if bounds[j].log { 1.0 } else { 1e-2 });
+        let steps: Vec<f64> = (0..n)
+            .map(|j| 1e-3 * u[j].abs().max(if bounds[j].log { 1.0 } else { 1e-2 }))
+            .collect();
+        let column = |j: usize| {
             let mut up = u.clone();
-            up[j] += h;
-            evaluations += 1;
-            let Some(rj) = residuals(&external(&up)) else {
-                continue;
-            };
+            up[j] += steps[j];
+            residuals(&external(&up))
+        };
+        evaluations += n;
+        for (j, rj) in columns(n, threads, &column).into_iter().enumerate() {
+            let Some(rj) = rj else { continue };
             for (i, (a, b)) in rj.iter().zip(&r).enumerate() {
-                jac[(i, j)] = (a - b) / h;
+                jac[(i, j)] = (a - b) / steps[j];
             }
         }
         let jt = jac.transpose();
@@ -108,7 +118,7 @@ pub fn levenberg_marquardt(
                     r = rt;
                     cost = c;
                     lambda = (lambda / 3.0).max(1e-7);
-                    improved = gain > 1e-4;
+                    improved = gain > tolerance;
                     break;
                 }
             }
@@ -123,6 +133,38 @@ pub fn levenberg_marquardt(
         cost,
         evaluations,
     })
+}
+
+/// `column(j)` for `j` in `0..n`, on up to `threads` threads.
+fn columns(
+    n: usize,
+    threads: usize,
+    column: &(dyn Fn(usize) -> Option<Vec<f64>> + Sync),
+) -> Vec<Option<Vec<f64>>> {
+    let threads = threads.clamp(1, n.max(1));
+    if threads == 1 {
+        return (0..n).map(column).collect();
+    }
+    let mut out: Vec<Option<Vec<f64>>> = vec![None; n];
+    std::thread::scope(|scope| {
+        let chunks: Vec<_> = out
+            .chunks_mut(n.div_ceil(threads))
+            .enumerate()
+            .map(|(c, chunk)| {
+                let first = c * n.div_ceil(threads);
+                scope.spawn(move || {
+                    for (k, slot) in chunk.iter_mut().enumerate() {
+                        *slot = column(first + k);
+                    }
+                })
+            })
+            .collect();
+        for c in chunks {
+            // A panicking column leaves its slots `None`: that column is skipped.
+            let _ = c.join();
+        }
+    });
+    out
 }
 
 #[cfg(test)]
@@ -146,7 +188,7 @@ mod tests {
                 log: true,
             },
         ];
-        let fit = levenberg_marquardt(&[1.0, 2.0], &bounds, 50, &mut |x| {
+        let fit = levenberg_marquardt(&[1.0, 2.0], &bounds, 50, 1e-4, 2, &|x| {
             Some(
                 t.iter()
                     .zip(&y)
@@ -166,7 +208,7 @@ mod tests {
                 log: false,
             },
         ];
-        let fit = levenberg_marquardt(&[1.0, 2.0], &tight, 50, &mut |x| {
+        let fit = levenberg_marquardt(&[1.0, 2.0], &tight, 50, 1e-4, 1, &|x| {
             Some(
                 t.iter()
                     .zip(&y)

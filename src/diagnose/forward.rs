@@ -3,10 +3,12 @@
 //! and analysed exactly like the recording ([`super::observe`]), so that every
 //! [`Observation`](super::observe::Observation) gets its simulated counterpart.
 //!
-//! The runs are independent and run on `threads` worker threads, longest first.
+//! The runs are independent and run on `threads` worker threads, longest first; a long
+//! run-up is cut into one segment per thread ([`super::forward_runup`]).
 
+use super::forward_runup::{self, BinSums};
 use super::observe::{LONG_RUN_BLOCKS, Observed, Regime, Run, analysis_options, slice};
-use super::observe_runup::{bin_tracks, bins};
+use super::observe_runup::bin_means;
 use crate::model::{ConnectionKind, Model};
 use crate::recording::{Channel, ChannelKind, Recording, RecordingMeta, RunKind as RecKind};
 use crate::signal::{Analysis, analyse_with};
@@ -17,9 +19,18 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 /// Shortest simulated steady record, s, and fewest working cycles in it.
 const STEADY_MIN_S: f64 = 0.25;
 const STEADY_MIN_CYCLES: f64 = 8.0;
-/// Run-ups start this long before the recording, at the same slope, so that the
-/// simulated run enters the recorded speed range already sweeping, as on the bench, s.
-const RUN_UP_LEAD_S: f64 = 0.1;
+/// Cycle-to-cycle change of the vibration speeds, relative to their peak, at which a
+/// simulated run counts as settled. Amplitudes are compared with a floor of 0.5 % of
+/// their value ([`super::residual`]); an unsettled remainder of 2e-3 of the peak moves
+/// an order amplitude by less than that, and the slow rigid-body remainder of the speed
+/// governor, which dominates it, falls below every analysed order. The transient
+/// module's default (1e-4) takes 5–6 times as many cycles here.
+pub const SETTLE_TOLERANCE: f64 = 2e-3;
+/// Longest settling of a simulated run, s: a driveline settles to [`SETTLE_TOLERANCE`] in
+/// 20–40 working cycles (under 1 s above 1000 rpm); one that has not by then is rattling
+/// (gear backlash), never settles, and is recorded as it is — its orders then carry the
+/// rattle as the bench's do.
+pub const MAX_SETTLE_S: f64 = 6.0;
 /// The simulation's output rate over the recording's (orders above the recording's
 /// Nyquist frequency must not fold back onto engine orders).
 const OVERSAMPLING: f64 = 4.0;
@@ -32,50 +43,33 @@ fn warms_up(model: &Model) -> bool {
         .any(|c| matches!(&c.kind, ConnectionKind::Rubber(r) if r.thermal.is_some()))
 }
 
-/// What to simulate for `run`.
+/// What to simulate for the steady run or long run `run` (run-ups go by segments,
+/// [`super::forward_runup`]).
 fn run_kind(model: &Model, run: &Run) -> RunKind {
     let cycle_s = |speed_rpm: f64| 120.0 / speed_rpm.max(1.0);
+    let short = |speed_rpm: f64| STEADY_MIN_S.max(STEADY_MIN_CYCLES * cycle_s(speed_rpm));
     match run.regime {
         Regime::Steady { speed_rpm } => RunKind::Steady {
             speed_rpm,
-            duration_s: run
-                .duration_s
-                .min(STEADY_MIN_S.max(STEADY_MIN_CYCLES * cycle_s(speed_rpm))),
+            duration_s: run.duration_s.min(short(speed_rpm)),
         },
         Regime::LongRun { speed_rpm } => RunKind::Steady {
             speed_rpm,
             duration_s: if warms_up(model) {
                 run.duration_s
             } else {
-                STEADY_MIN_S.max(STEADY_MIN_CYCLES * cycle_s(speed_rpm))
+                short(speed_rpm)
             },
         },
-        Regime::RunUp { from_rpm, to_rpm } => {
-            let lead = lead_s(run);
-            let slope = (to_rpm - from_rpm) / run.duration_s.max(1e-9);
-            RunKind::Ramp {
-                from_rpm: from_rpm - slope * lead,
-                to_rpm,
-                duration_s: run.duration_s + lead,
-            }
-        }
-    }
-}
-
-/// The lead-in of a run-up, s: [`RUN_UP_LEAD_S`], shortened so the ramp starts above a
-/// quarter of its first recorded speed.
-fn lead_s(run: &Run) -> f64 {
-    match run.regime {
-        Regime::RunUp { from_rpm, to_rpm } => {
-            let slope = ((to_rpm - from_rpm) / run.duration_s.max(1e-9)).abs();
-            RUN_UP_LEAD_S.min(0.75 * from_rpm.min(to_rpm) / slope.max(1e-9))
-        }
-        _ => 0.0,
+        Regime::RunUp { from_rpm, .. } => RunKind::Steady {
+            speed_rpm: from_rpm,
+            duration_s: run.duration_s,
+        },
     }
 }
 
 /// The simulated stations of `run` as a recording.
-fn station_recording(
+pub(super) fn station_recording(
     sim: &crate::transient::Simulation,
     run: &Run,
     kind: RecKind,
@@ -126,20 +120,12 @@ fn predict_run(
     let options = RunOptions {
         load: run.load,
         rate_hz: OVERSAMPLING * run.rate_hz,
+        settle_tolerance: SETTLE_TOLERANCE,
+        max_settle_s: MAX_SETTLE_S,
         ..RunOptions::default()
     };
     let sim = simulate(model, kind, options, &mut |_| true).map_err(|e| e.to_string())?;
-    let rec_kind = match run.regime {
-        Regime::RunUp { .. } => RecKind::RunUp,
-        _ => RecKind::Steady,
-    };
-    let mut rec = station_recording(&sim, run, rec_kind)?;
-    if let Regime::RunUp { .. } = run.regime {
-        let lead = lead_s(run);
-        rec = slice(&rec, lead, lead + run.duration_s);
-        let t0 = rec.time_s.first().copied().unwrap_or(0.0);
-        rec.time_s.iter_mut().for_each(|t| *t -= t0);
-    }
+    let rec = station_recording(&sim, run, RecKind::Steady)?;
     let analysis_opts = analysis_options(max_order);
     let analyse = |rec: &Recording| analyse_with(rec, &analysis_opts).map_err(|e| e.to_string());
     let mine = observed
@@ -170,77 +156,87 @@ fn predict_run(
                 })
                 .collect())
         }
-        Regime::RunUp { .. } => {
-            let a = analyse(&rec)?;
-            let stft = a.stft.as_ref().ok_or("no STFT of the simulated run-up")?;
-            // Each simulated window takes the bin of the measured window nearest in time.
-            let (measured_bins, speeds) = bins(&run.window_speeds_rpm);
-            let window_bins: Vec<Option<usize>> = stft
-                .times_s
-                .iter()
-                .map(|t| {
-                    let k = run.window_times_s.partition_point(|x| x < t);
-                    let near = [k.saturating_sub(1), k.min(run.window_times_s.len() - 1)]
-                        .into_iter()
-                        .min_by(|a, b| {
-                            (run.window_times_s[*a] - t)
-                                .abs()
-                                .total_cmp(&(run.window_times_s[*b] - t).abs())
-                        })?;
-                    measured_bins.get(near).copied().flatten()
-                })
-                .collect();
-            let (tracks, _) = bin_tracks(&a, &window_bins, speeds.len());
-            Ok(mine
-                .map(|(i, o)| {
-                    let s = a.stations.iter().position(|s| s.name == o.station);
-                    let q = stft.orders.iter().position(|q| (q - o.order).abs() < 1e-9);
-                    let v = match (s, q) {
-                        (Some(s), Some(q)) => tracks[s][q].get(o.part).copied(),
-                        _ => None,
-                    };
-                    (i, v.filter(|v| v.is_finite()).unwrap_or(0.0))
-                })
-                .collect())
-        }
+        Regime::RunUp { .. } => Err("a run-up is simulated by segments".into()),
     }
 }
 
 /// The simulated amplitude of every observation of `observed` for `model`, before the
-/// measurement ([`super::sensor`]). Errors name the recording whose simulation failed.
+/// measurement ([`super::sensor`]); only the runs `wanted` (all when `None`) are simulated,
+/// the others' observations are left 0. Errors name the recording whose simulation failed.
 pub fn predict(
     model: &Model,
     observed: &Observed,
     max_order: f64,
     threads: usize,
+    wanted: Option<&[bool]>,
 ) -> Result<Vec<f64>, (String, String)> {
-    let mut order: Vec<usize> = (0..observed.runs.len()).collect();
-    let cost = |r: usize| match run_kind(model, &observed.runs[r]) {
-        RunKind::Steady { duration_s, .. } | RunKind::Ramp { duration_s, .. } => duration_s,
+    let threads = threads.max(1);
+    let mut jobs: Vec<Job> = Vec::new();
+    for (r, run) in observed.runs.iter().enumerate() {
+        if !wanted.is_none_or(|w| w.get(r).copied().unwrap_or(false)) {
+            continue;
+        }
+        match run.regime {
+            Regime::RunUp { .. } => jobs.extend(
+                forward_runup::segments(observed, r, threads)
+                    .into_iter()
+                    .map(Job::Segment),
+            ),
+            _ => jobs.push(Job::Run(r)),
+        }
+    }
+    let cost = |j: &Job| match j {
+        Job::Segment(s) => s.cost_s(observed),
+        Job::Run(r) => match run_kind(model, &observed.runs[*r]) {
+            RunKind::Steady { duration_s, .. } | RunKind::Ramp { duration_s, .. } => duration_s,
+        },
     };
-    order.sort_by(|a, b| cost(*b).total_cmp(&cost(*a)));
+    jobs.sort_by(|a, b| cost(b).total_cmp(&cost(a)));
     let next = AtomicUsize::new(0);
     let out = Mutex::new(vec![0.0; observed.observations.len()]);
+    let sums: Mutex<Vec<BinSums>> = Mutex::new(vec![BinSums::new(); observed.runs.len()]);
     let failure = Mutex::new(None);
     std::thread::scope(|scope| {
-        for _ in 0..threads.clamp(1, observed.runs.len().max(1)) {
+        for _ in 0..threads.min(jobs.len().max(1)) {
             scope.spawn(|| {
                 loop {
                     let k = next.fetch_add(1, Ordering::Relaxed);
-                    let Some(&r) = order.get(k) else { break };
-                    match predict_run(model, observed, r, max_order) {
-                        Ok(values) => {
+                    let Some(job) = jobs.get(k) else { break };
+                    let (r, result) = match job {
+                        Job::Run(r) => (
+                            *r,
+                            predict_run(model, observed, *r, max_order).map(Done::Values),
+                        ),
+                        Job::Segment(seg) => (
+                            seg.run,
+                            forward_runup::predict_segment(
+                                model,
+                                observed,
+                                *seg,
+                                max_order,
+                                OVERSAMPLING * observed.runs[seg.run].rate_hz,
+                            )
+                            .map(Done::Sums),
+                        ),
+                    };
+                    match result {
+                        Ok(Done::Values(values)) => {
                             if let Ok(mut out) = out.lock() {
                                 for (i, v) in values {
                                     out[i] = v;
                                 }
                             }
                         }
+                        Ok(Done::Sums(part)) => {
+                            if let Ok(mut sums) = sums.lock() {
+                                forward_runup::accumulate(&mut sums[r], part);
+                            }
+                        }
                         Err(e) => {
                             if let Ok(mut f) = failure.lock() {
                                 f.get_or_insert((observed.runs[r].label.clone(), e));
                             }
-                            next.store(order.len(), Ordering::Relaxed);
+                            next.store(jobs.len(), Ordering::Relaxed);
                         }
                     }
                 }
@@ -250,6 +246,36 @@ pub fn predict(
     if let Some(f) = failure.into_inner().ok().flatten() {
         return Err(f);
     }
-    out.into_inner()
-        .map_err(|_| ("all".to_string(), "a worker thread panicked".to_string()))
+    let panicked = || ("all".to_string(), "a worker thread panicked".to_string());
+    let mut out = out.into_inner().map_err(|_| panicked())?;
+    let sums = sums.into_inner().map_err(|_| panicked())?;
+    for (i, o) in observed.observations.iter().enumerate() {
+        if !matches!(observed.runs[o.run].regime, Regime::RunUp { .. }) {
+            continue;
+        }
+        if let Some((sum, count)) = sums[o.run].get(&(o.station.clone(), o.order.to_bits())) {
+            out[i] = bin_means(sum, count)
+                .get(o.part)
+                .copied()
+                .filter(|v| v.is_finite())
+                .unwrap_or(0.0);
+        }
+    }
+    Ok(out)
+}
+
+/// A piece of a campaign's simulation.
+enum Job {
+    /// A steady regime or long run.
+    Run(usize),
+    /// A stretch of a run-up.
+    Segment(forward_runup::Segment),
+}
+
+/// What a job gives.
+enum Done {
+    /// `(observation, amplitude)` of a steady regime or long run.
+    Values(Vec<(usize, f64)>),
+    /// A run-up segment's bins.
+    Sums(BinSums),
 }

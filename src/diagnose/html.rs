@@ -101,8 +101,24 @@ pub fn report_html(report: &Report, model_name: &str) -> String {
     } else {
         tables::resonances(&mut out, report);
     }
-    out.push_str("<h2 id=\"candidates\">Candidate effects</h2>\n<p>Every effect tried, best first. Each was fitted (its own parameters together with scale factors of the plain parameters it could be confused with) on the fit recordings, then scored on the held-out ones. χ²/N is the mean of z² over the amplitudes compared. <b>Score</b> = held-out χ² per amplitude + k·ln(n)/n (the BIC penalty of its k fitted parameters on n fitted amplitudes); lower is better. The verdict's row is highlighted.</p>\n");
+    out.push_str("<h2 id=\"candidates\">Candidate effects</h2>\n<p>Every effect tried, best first. Each was screened cheaply on the fit recordings (on the linear model, or in the time domain of the recordings that show it), the most promising were fitted again in the time domain on every fit recording (its own parameters together with scale factors of the plain parameters), then scored on the held-out ones; only those (<em>time domain</em>) can be the verdict, the others' numbers are the screening's estimate. χ²/N is the mean of z² over the amplitudes compared. <b>Score</b> = held-out χ² per amplitude + k·ln(n)/n (the BIC penalty of its k fitted parameters on n fitted amplitudes); lower is better. The verdict's row is highlighted.</p>\n");
     tables::candidates(&mut out, report);
+    if !report.not_fitted.is_empty() {
+        out.push_str("<p class=\"small\">Not fitted, their signature being absent: ");
+        let items: Vec<String> = report
+            .not_fitted
+            .iter()
+            .map(|n| {
+                format!(
+                    "<code>{}</code> — {}",
+                    escape(&n.candidate),
+                    escape(&n.reason)
+                )
+            })
+            .collect();
+        out.push_str(&items.join("; "));
+        out.push_str(".</p>\n");
+    }
     overlays(&mut out, report);
     out.push_str("<h2 id=\"recordings\">Recordings</h2>\n");
     tables::recordings(&mut out, report);

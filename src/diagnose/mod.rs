@@ -10,18 +10,26 @@
 //! - [`forward`]: the same quantities predicted by a model: the nonlinear time domain of
 //!   [`crate::transient`] run at each recording's regime and analysed the same way, so
 //!   measured and simulated meet on equal terms.
+//!   A long run-up is simulated in segments on parallel threads ([`forward_runup`]).
+//! - [`context`]: the two ways a model is evaluated: the time domain (what is scored) and
+//!   the linear surrogate (what the fits move on).
 //! - [`candidates`]: the effects of the spec's table as model extensions with few
 //!   parameters (they are the effects [`crate::synth`] can add), each with its signature.
 //! - [`fit`]: Levenberg–Marquardt on the effect's parameters together with the scale
 //!   factors of the plain parameters they could be confused with.
+//! - [`screen`]: every candidate fitted cheaply (surrogate, or the time domain of only the
+//!   recordings that show it; an effect whose signature is absent is not fitted), the
+//!   best three by the fitted data verified in the time domain ([`rounds`]).
 //! - [`decide`]: held-out scoring with a parameter penalty and the verdict.
 //! - [`report`]: the JSON of the spec; [`html`] the page for a person.
 
 pub mod accept;
 pub mod candidates;
+pub mod context;
 pub mod decide;
 pub mod fit;
 pub mod forward;
+pub mod forward_runup;
 pub mod holdout;
 pub mod html;
 pub mod observe;
@@ -29,7 +37,9 @@ pub mod observe_runup;
 pub mod report;
 pub mod report_parts;
 pub mod residual;
+pub mod rounds;
 pub mod run;
+pub mod screen;
 pub mod sensor;
 pub mod spread;
 pub mod surrogate;

@@ -113,12 +113,27 @@ pub struct Observed {
 /// The analysis options of a diagnosis: no relative speeds, orders up to `max_order`.
 pub fn analysis_options(max_order: f64) -> AnalysisOptions {
     AnalysisOptions {
+        samples_per_rev: samples_per_rev(max_order),
         max_order,
         track_max_order: max_order,
         pairs: Some(Vec::new()),
         ..AnalysisOptions::default()
     }
 }
+
+/// Angle-domain points per revolution for orders up to `max_order`: at least
+/// [`POINTS_PER_PERIOD`] per period of the highest order, a power of two, no more than
+/// the analysis' default (the cost of every analysis, measured or simulated, is
+/// proportional to it).
+pub fn samples_per_rev(max_order: f64) -> usize {
+    let wanted = (POINTS_PER_PERIOD * max_order).ceil().max(16.0) as usize;
+    wanted
+        .next_power_of_two()
+        .min(crate::signal::resample::SAMPLES_PER_REV)
+}
+
+/// Angle-domain points per period of the highest analysed order.
+const POINTS_PER_PERIOD: f64 = 8.0;
 
 /// The samples of `recording` from `from_s` to `to_s` (relative to its first sample).
 pub fn slice(recording: &Recording, from_s: f64, to_s: f64) -> Recording {

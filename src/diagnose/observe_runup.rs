@@ -13,7 +13,7 @@ const HANN_ENBW: f64 = 1.5;
 const MIN_WINDOWS: usize = 2;
 
 /// Per bin, `sum / count`, or `NaN` for a bin with fewer than [`MIN_WINDOWS`] windows.
-fn bin_means(sum: &[f64], count: &[usize]) -> Vec<f64> {
+pub fn bin_means(sum: &[f64], count: &[usize]) -> Vec<f64> {
     sum.iter()
         .zip(count)
         .map(|(s, c)| {

@@ -48,6 +48,8 @@ pub struct Report {
     /// Extension: noise of the measured order amplitudes, rpm (median over all), the
     /// yardstick of every `z`.
     pub noise_rpm: f64,
+    /// Extension: effects that were not fitted, and why.
+    pub not_fitted: Vec<NotFitted>,
     /// Extension: wall-clock time of the diagnosis, s.
     pub elapsed_s: f64,
 }
@@ -144,6 +146,18 @@ pub struct Candidate {
     pub parameter_count: usize,
     /// Extension: why it was tried (its signature in the data), or why not.
     pub signature: String,
+    /// Extension: scored in the time domain on every recording (only such a candidate can
+    /// be the verdict); `false`: only screened (its numbers are the screening's estimate).
+    pub verified: bool,
+}
+
+/// Extension: an effect not fitted, and why (its signature is absent from the data).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct NotFitted {
+    /// `"coupling_thermal_drift at coupling"`.
+    pub candidate: String,
+    /// Why not.
+    pub reason: String,
 }
 
 /// The verdict's fit, measured where the fit did not look.

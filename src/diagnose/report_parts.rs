@@ -2,10 +2,10 @@
 //! map, resonances no mode explains, before/after overlays on held-out data, and the
 //! recordings used.
 
+use super::context::{Context, Evaluated};
 use super::decide::{kind_label, run_roles, validated_on};
 use super::observe::Regime;
 use super::report::*;
-use super::run::{Context, Evaluated};
 use crate::physics::{OperatingPoint, System};
 
 /// Mismatches listed in the report.
@@ -23,6 +23,7 @@ pub fn assemble(
     candidates: Vec<Candidate>,
     before: f64,
     after: f64,
+    not_fitted: Vec<NotFitted>,
     elapsed_s: f64,
 ) -> Report {
     let obs = &cx.observed;
@@ -94,6 +95,7 @@ pub fn assemble(
         overlays: overlays(cx, baseline, after_model),
         recordings,
         noise_rpm: noise.get(noise.len() / 2).copied().unwrap_or(0.0),
+        not_fitted,
         elapsed_s,
     }
 }

@@ -73,6 +73,7 @@ fn report() -> Report {
         residual_fitted: after,
         parameter_count: k,
         signature: String::new(),
+        verified: true,
     };
     let cell = |station: &str, order: f64, speed_rpm: f64, z: f64| MapCell {
         recording: "Regime A".into(),
@@ -128,6 +129,7 @@ fn report() -> Report {
             role: "fit".into(),
         }],
         noise_rpm: 0.02,
+        not_fitted: Vec::new(),
         elapsed_s: 50.0,
     }
 }

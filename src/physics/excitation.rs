@@ -58,8 +58,37 @@ impl CylinderSpectrum {
     }
 }
 
-/// The spectrum of one cylinder's torque at engine load `load` (seed 001 eq. 3–4).
+/// Spectra kept by [`cylinder_spectrum`]: a fit or a GUI edit rebuilds the system many
+/// times with the same engine, and the transform is most of a system's cost.
+const SPECTRA_KEPT: usize = 16;
+
+/// The spectrum of one cylinder's torque at engine load `load` (seed 001 eq. 3–4),
+/// computed once per engine and load and then taken from a small cache.
 pub fn cylinder_spectrum(engine: &Engine, load: f64) -> CylinderSpectrum {
+    use std::sync::Mutex;
+    type Kept = Vec<((Engine, u64), CylinderSpectrum)>;
+    static KEPT: Mutex<Kept> = Mutex::new(Vec::new());
+    // A cylinder's pressure scale is applied per cylinder, after the transform.
+    let mut unscaled = engine.clone();
+    unscaled.pressure_scale = None;
+    let key = (unscaled, load.to_bits());
+    if let Ok(kept) = KEPT.lock()
+        && let Some((_, s)) = kept.iter().find(|(k, _)| *k == key)
+    {
+        return s.clone();
+    }
+    let spectrum = compute_cylinder_spectrum(engine, load);
+    if let Ok(mut kept) = KEPT.lock() {
+        if kept.len() >= SPECTRA_KEPT {
+            kept.remove(0);
+        }
+        kept.push((key, spectrum.clone()));
+    }
+    spectrum
+}
+
+/// [`cylinder_spectrum`] without the cache.
+fn compute_cylinder_spectrum(engine: &Engine, load: f64) -> CylinderSpectrum {
     let n = SAMPLES_PER_CYCLE;
     let cycle_rad = engine.cycle_deg().to_radians();
     let phis = (0..n).map(|i| cycle_rad * i as f64 / n as f64);

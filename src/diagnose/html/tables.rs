@@ -213,6 +213,7 @@ pub fn candidates(out: &mut String, report: &Report) {
             "χ²/N held out, before",
             "χ²/N held out, after",
             "score",
+            "scored in",
             "signature in the data",
         ],
         &rows,
@@ -242,6 +243,14 @@ fn candidate_cells(rank: usize, c: &Candidate) -> String {
         num(c.residual_before, 3),
         num(c.residual_after, 3),
         num(c.score, 3),
+        format!(
+            r#"<td class="small">{}</td>"#,
+            if c.verified {
+                "time domain"
+            } else {
+                "screening (estimate)"
+            }
+        ),
         format!(r#"<td class="small">{}</td>"#, escape(&c.signature)),
     ]
     .concat()

@@ -28,6 +28,7 @@ fn candidate(effect: &str, score: f64) -> Candidate {
         residual_fitted: 0.9,
         parameter_count: 2,
         signature: "order 2 changes with load".into(),
+        verified: true,
     }
 }
 
@@ -146,6 +147,7 @@ fn sample() -> Report {
             recording("Run-up", "run-up", [1000.0, 6000.0], "fit"),
         ],
         noise_rpm: 0.05,
+        not_fitted: Vec::new(),
         elapsed_s: 12.5,
     }
 }

@@ -65,7 +65,15 @@ pub fn candidates_ui(report: &Report, ui: &mut Ui) {
                 } else {
                     String::new()
                 }));
-                ui.label(cell(c.effect.clone()));
+                if c.verified {
+                    ui.label(cell(c.effect.clone()));
+                } else {
+                    ui.label(cell(format!("{} (screened)", c.effect)))
+                        .on_hover_text(
+                            "only screened: its numbers are the screening's estimate, not a \
+                         time-domain fit, and it cannot be the verdict",
+                        );
+                }
                 ui.label(cell(c.parameter_count.to_string()));
                 ui.label(cell(format!("{:.3}", c.residual_fitted)));
                 ui.label(cell(format!("{:.3}", c.residual_before)));

@@ -1,0 +1,278 @@
+//! What a diagnosis holds while it runs, and the two ways it evaluates a model: the time
+//! domain ([`super::forward`], what gets scored) and the linear surrogate
+//! ([`super::surrogate`], what the fits move on).
+
+use super::candidates::Candidate;
+use super::fit::{Bounds, levenberg_marquardt};
+use super::observe::Observed;
+use super::residual::{chi2_per_point, z_scores};
+use super::sensor::{self, TapeJoint};
+use super::surrogate::{Plain, linear_predict, ratios, scaled};
+use super::{DiagnoseError, DiagnoseOptions, forward, spread};
+use crate::model::Model;
+
+/// Plain parameters stay within ±30 % of the user's values.
+pub const PLAIN_BOUNDS: Bounds = Bounds {
+    lo: 0.7,
+    hi: 1.3,
+    log: true,
+};
+/// A priori spread of a plain parameter (its catalogue or drawing tolerance), as a
+/// relative standard deviation: 10 %. It enters the fit as one residual `ln f / 0.1`
+/// per factor and only matters along directions the recordings cannot tell apart (an
+/// inertia and a stiffness scaled together keep every natural frequency).
+const PLAIN_PRIOR: f64 = 0.1;
+/// Levenberg–Marquardt iterations on the surrogate, and the relative gain of the cost
+/// under which a fit stops.
+const SURROGATE_ITERATIONS: usize = 30;
+const SURROGATE_TOLERANCE: f64 = 1e-4;
+
+/// A model evaluated on every observation.
+#[derive(Debug, Clone)]
+pub struct Evaluated {
+    /// The model.
+    pub model: Model,
+    /// Tape joint, for a sensor artifact.
+    pub joint: Option<TapeJoint>,
+    /// Simulated amplitudes as measured (time domain, or the surrogate for a
+    /// [`Proposal`]'s screening).
+    pub simulated: Vec<f64>,
+    /// z of every observation.
+    pub z: Vec<f64>,
+    /// Plain scale factors.
+    pub factors: Vec<f64>,
+    /// The effect's fitted value, if any.
+    pub value: Option<f64>,
+}
+
+/// Everything a diagnosis needs while it runs.
+pub struct Context<'a> {
+    /// The recordings analysed.
+    pub observed: Observed,
+    /// Held-out observations.
+    pub held_out: Vec<bool>,
+    /// The user's model.
+    pub user: &'a Model,
+    /// Its plain parameters.
+    pub plain: Vec<Plain>,
+    /// Settings.
+    pub options: &'a DiagnoseOptions,
+}
+
+impl Context<'_> {
+    /// The time-domain amplitudes of `model` as the bench would measure them. With
+    /// `only = Some((runs, fill))` just the runs flagged are simulated and every other
+    /// observation is taken from `fill` (a cheaper evaluation for a fit that only moves
+    /// those runs).
+    pub fn simulate(
+        &self,
+        model: &Model,
+        joint: Option<&TapeJoint>,
+        only: Option<(&[bool], &[f64])>,
+    ) -> Result<Vec<f64>, DiagnoseError> {
+        let mut v = forward::predict(
+            model,
+            &self.observed,
+            self.options.max_order,
+            self.options.threads,
+            only.map(|(runs, _)| runs),
+        )
+        .map_err(|(label, message)| DiagnoseError::Simulation { label, message })?;
+        for (x, f) in v
+            .iter_mut()
+            .zip(spread::spread_factors(model, &self.observed))
+        {
+            *x *= f;
+        }
+        sensor::measure(&self.observed, &ratios(model), joint, &mut v);
+        if let Some((runs, fill)) = only {
+            for ((x, o), f) in v.iter_mut().zip(&self.observed.observations).zip(fill) {
+                if !runs.get(o.run).copied().unwrap_or(false) {
+                    *x = *f;
+                }
+            }
+        }
+        Ok(v)
+    }
+
+    /// `simulated` with its z-scores.
+    pub fn scored(
+        &self,
+        model: Model,
+        joint: Option<TapeJoint>,
+        simulated: Vec<f64>,
+        factors: Vec<f64>,
+        value: Option<f64>,
+    ) -> Evaluated {
+        let z = z_scores(&self.observed, &simulated);
+        Evaluated {
+            model,
+            joint,
+            simulated,
+            z,
+            factors,
+            value,
+        }
+    }
+
+    /// Evaluates `model` in the time domain.
+    pub fn evaluate(
+        &self,
+        model: Model,
+        joint: Option<TapeJoint>,
+        factors: Vec<f64>,
+        value: Option<f64>,
+    ) -> Result<Evaluated, DiagnoseError> {
+        let simulated = self.simulate(&model, joint.as_ref(), None)?;
+        Ok(self.scored(model, joint, simulated, factors, value))
+    }
+
+    /// χ²/N of `e` on the fitted (`held = false`) or held-out observations.
+    pub fn chi2(&self, e: &Evaluated, held: bool) -> f64 {
+        let mask: Vec<bool> = self.held_out.iter().map(|h| *h == held).collect();
+        chi2_per_point(&e.z, &mask)
+    }
+
+    /// Fitted observations.
+    pub fn n_fitted(&self) -> usize {
+        self.held_out.iter().filter(|h| !**h).count().max(1)
+    }
+
+    /// The fitted observations' z for a prediction.
+    pub fn fit_z(&self, predicted: &[f64]) -> Vec<f64> {
+        z_scores(&self.observed, predicted)
+            .into_iter()
+            .zip(&self.held_out)
+            .filter(|(_, h)| !**h)
+            .map(|(z, _)| z)
+            .collect()
+    }
+
+    /// The time domain's difference from the linear model at `at`: what the surrogate
+    /// adds to the linear model around it (zero where the linear model cannot be built).
+    fn correction(&self, at: &Evaluated) -> Vec<f64> {
+        match linear_predict(&at.model, &self.observed, at.joint.as_ref()) {
+            Some(f0) => at.simulated.iter().zip(&f0).map(|(t, f)| t - f).collect(),
+            None => vec![0.0; at.simulated.len()],
+        }
+    }
+
+    /// Fits, on the surrogate around `at`, the plain factors `free` (the others stay at
+    /// `at`'s) and, for a candidate the linear model represents, its parameter. Returns
+    /// the fitted point with the surrogate's prediction in `simulated` (no time domain).
+    pub fn propose(
+        &self,
+        at: &Evaluated,
+        candidate: Option<&Candidate>,
+        free: &[usize],
+    ) -> Result<Evaluated, DiagnoseError> {
+        let n = self.plain.len();
+        let full = |x: &[f64]| -> Vec<f64> {
+            let mut f = at.factors.clone();
+            for (k, i) in free.iter().enumerate() {
+                f[*i] = x[k];
+            }
+            f
+        };
+        let build = |x: &[f64]| -> Option<(Model, Option<TapeJoint>)> {
+            let m = scaled(self.user, &self.plain, &full(x)).ok()?;
+            match candidate {
+                Some(c) => c.apply(&m, x[free.len()]).ok(),
+                None => Some((m, at.joint.clone())),
+            }
+        };
+        let mut start: Vec<f64> = free.iter().map(|i| at.factors[*i]).collect();
+        let mut bounds = vec![PLAIN_BOUNDS; free.len()];
+        if let Some(c) = candidate {
+            start.push(at.value.unwrap_or(c.param.start));
+            bounds.push(Bounds {
+                lo: c.param.lo,
+                hi: c.param.hi,
+                log: c.param.log,
+            });
+        }
+        let correction = self.correction(at);
+        let predict = |x: &[f64]| -> Option<Vec<f64>> {
+            let (m, j) = build(x)?;
+            let f = linear_predict(&m, &self.observed, j.as_ref())?;
+            Some(
+                f.iter()
+                    .zip(&correction)
+                    .map(|(a, d)| (a + d).max(0.0))
+                    .collect(),
+            )
+        };
+        let residuals = |x: &[f64]| -> Option<Vec<f64>> {
+            let mut r = self.fit_z(&predict(x)?);
+            r.extend(full(x).iter().map(|f| f.ln() / PLAIN_PRIOR));
+            Some(r)
+        };
+        // A new effect starts from the best of a few values across its range (a local
+        // mode, say, can sit on either side of a measured resonance).
+        if let (Some(c), None) = (candidate, at.value) {
+            let k = free.len();
+            let mut best = (f64::INFINITY, start[k]);
+            for v in start_grid(&c.param) {
+                let mut x = start.clone();
+                x[k] = v;
+                if let Some(r) = residuals(&x) {
+                    let cost: f64 = r.iter().map(|v| v * v).sum();
+                    if cost < best.0 {
+                        best = (cost, v);
+                    }
+                }
+            }
+            start[k] = best.1;
+        }
+        let x = levenberg_marquardt(
+            &start,
+            &bounds,
+            SURROGATE_ITERATIONS,
+            SURROGATE_TOLERANCE,
+            self.options.threads,
+            &residuals,
+        )
+        .map_or(start, |f| f.x);
+        let (m, j) = build(&x).ok_or_else(|| DiagnoseError::Input("bad fit".into()))?;
+        let simulated = predict(&x).ok_or_else(|| DiagnoseError::Input("bad fit".into()))?;
+        let factors = full(&x);
+        let value = candidate.map(|_| x[free.len()]);
+        debug_assert!(factors.len() == n);
+        Ok(self.scored(m, j, simulated, factors, value))
+    }
+
+    /// The one plain parameter that alone explains the most: each fitted by itself on the
+    /// surrogate around `baseline`; returns its index, factor and χ²/N on the fitted
+    /// data (surrogate).
+    pub fn single_parameter(&self, baseline: &Evaluated) -> Option<(usize, f64, f64)> {
+        let fits: Vec<Option<(usize, f64, f64)>> = (0..self.plain.len())
+            .map(|i| {
+                let e = self.propose(baseline, None, &[i]).ok()?;
+                // The prior's residual is not part of the data's χ².
+                let z = self.fit_z(&e.simulated);
+                let chi2 = z.iter().map(|v| v * v).sum::<f64>() / self.n_fitted() as f64;
+                Some((i, e.factors[i], chi2))
+            })
+            .collect();
+        fits.into_iter()
+            .flatten()
+            .min_by(|a, b| a.2.total_cmp(&b.2))
+    }
+}
+
+/// Start values to try for a parameter: its start and, spread over its range, values a
+/// factor 3 apart (log) or at fifths of the range (linear).
+fn start_grid(p: &super::candidates::Param) -> Vec<f64> {
+    let mut out = vec![p.start];
+    if p.log {
+        for k in [-2, -1, 1, 2] {
+            let v = p.start * 3f64.powi(k);
+            if (p.lo..=p.hi).contains(&v) {
+                out.push(v);
+            }
+        }
+    } else {
+        out.extend((0..=4).map(|k| p.lo + (p.hi - p.lo) * f64::from(k) / 4.0));
+    }
+    out
+}

@@ -1,0 +1,173 @@
+//! Fits that the time domain checks: rounds of surrogate fit and time-domain run, and
+//! the fits of effects the linear model cannot represent (backlash, thermal drift, a
+//! sensor artifact), made on the time domain itself.
+
+use super::DiagnoseError;
+use super::candidates::Candidate;
+use super::context::{Context, Evaluated};
+use super::fit::{Bounds, levenberg_marquardt};
+use super::sensor;
+use super::surrogate::{ratios, scaled};
+use crate::synth::Effect;
+
+/// Rounds stop when χ²/N on the fitted data improves by less than this fraction.
+const ROUND_GAIN: f64 = 0.005;
+/// Points of the coarse grid of a time-domain search, a factor 3 apart (3⁴ = 81 between
+/// the ends), and the halvings of the bracket after it (to a factor √3 = 1.73, which the
+/// closing parabola refines).
+const SEARCH_GRID: usize = 5;
+const SEARCH_HALVINGS: usize = 1;
+
+impl Context<'_> {
+    /// Surrogate fits (every plain factor free, and the candidate's parameter) and
+    /// time-domain runs, alternating from `start` until χ²/N on the fitted data gains
+    /// less than [`ROUND_GAIN`] or `max` rounds are done. `first`: a surrogate proposal
+    /// already made from `start`, to be run in the time domain as the first round.
+    pub fn rounds(
+        &self,
+        start: Evaluated,
+        candidate: Option<&Candidate>,
+        max: usize,
+        first: Option<Evaluated>,
+    ) -> Result<Evaluated, DiagnoseError> {
+        let all: Vec<usize> = (0..self.plain.len()).collect();
+        // A candidate's first round always counts when it adds the effect.
+        let mut adds = candidate.is_some() && start.value.is_none();
+        let mut proposal = first;
+        let mut best = start;
+        for _ in 0..max {
+            let p = match proposal.take() {
+                Some(p) => p,
+                None => self.propose(&best, candidate, &all)?,
+            };
+            let next = self.evaluate(p.model, p.joint, p.factors, p.value)?;
+            let (old, new) = (self.chi2(&best, false), self.chi2(&next, false));
+            if new < old || adds {
+                best = next;
+            }
+            adds = false;
+            if new >= old * (1.0 - ROUND_GAIN) {
+                break;
+            }
+        }
+        Ok(best)
+    }
+
+    /// Fits a candidate's parameter in the time domain with the plain factors of `at`,
+    /// simulating only the runs flagged in `runs` (the others keep `at`'s values); the
+    /// result is scored on those runs only, as a screening. The search is a bracketing
+    /// one, not a gradient one: an effect like backlash makes the simulated amplitudes a
+    /// rough function of its parameter, where finite differences mislead. A grid a factor
+    /// 3 apart ([`SEARCH_GRID`] points), then the bracket around the best halved (in
+    /// `ln x`) [`SEARCH_HALVINGS`] times, then the parabola through the last three points.
+    pub fn fit_time_domain(
+        &self,
+        at: &Evaluated,
+        c: &Candidate,
+        runs: &[bool],
+    ) -> Result<Evaluated, DiagnoseError> {
+        let base = scaled(self.user, &self.plain, &at.factors).map_err(DiagnoseError::Input)?;
+        let p = &c.param;
+        // The internal coordinate: ln x for a scale-like parameter, else x itself.
+        let log = p.log;
+        let to_x = |u: f64| if log { u.exp() } else { u };
+        let from_x = |x: f64| if log { x.ln() } else { x };
+        let step = if p.log {
+            3f64.ln()
+        } else {
+            (p.hi - p.lo) / 8.0
+        };
+        let (lo, hi) = (from_x(p.lo), from_x(p.hi));
+        // The best point's simulation is kept: it is the result.
+        let mut kept: Option<(f64, f64, Vec<f64>)> = None;
+        let mut cost_at = |u: f64| -> f64 {
+            let value = to_x(u.clamp(lo, hi));
+            let simulated = c.apply(&base, value).ok().and_then(|(m, j)| {
+                self.simulate(&m, j.as_ref(), Some((runs, &at.simulated)))
+                    .ok()
+            });
+            let Some(s) = simulated else {
+                return f64::INFINITY;
+            };
+            let cost = self.fit_z(&s).iter().map(|z| z * z).sum::<f64>();
+            if kept.as_ref().is_none_or(|k| cost < k.1) {
+                kept = Some((u, cost, s));
+            }
+            cost
+        };
+        let centre = from_x(p.start);
+        let half = (SEARCH_GRID / 2) as f64;
+        let mut tried: Vec<(f64, f64)> = (0..SEARCH_GRID)
+            .map(|k| (centre + (k as f64 - half) * step).clamp(lo, hi))
+            .map(|u| (u, cost_at(u)))
+            .collect();
+        let mut best = tried
+            .iter()
+            .copied()
+            .min_by(|a, b| a.1.total_cmp(&b.1))
+            .unwrap_or((centre, f64::INFINITY));
+        let mut h = step;
+        for _ in 0..SEARCH_HALVINGS {
+            h /= 2.0;
+            for u in [best.0 - h, best.0 + h] {
+                let u = u.clamp(lo, hi);
+                let point = (u, cost_at(u));
+                tried.push(point);
+                if point.1 < best.1 {
+                    best = point;
+                }
+            }
+        }
+        // The parabola through the best and its two neighbours at ±h, when it has a
+        // minimum between them.
+        let near = |u: f64| tried.iter().find(|t| (t.0 - u).abs() < 1e-12 * h.max(1.0));
+        if let (Some(a), Some(b)) = (near(best.0 - h), near(best.0 + h)) {
+            let curvature = a.1 + b.1 - 2.0 * best.1;
+            if curvature > 0.0 && curvature.is_finite() {
+                let u = (best.0 + 0.5 * h * (a.1 - b.1) / curvature).clamp(lo, hi);
+                cost_at(u);
+            }
+        }
+        let Some((u, _, simulated)) = kept else {
+            return Err(DiagnoseError::Input(format!(
+                "{}: no value of {} could be simulated",
+                c.name(),
+                p.key
+            )));
+        };
+        let value = to_x(u.clamp(lo, hi));
+        let (m, j) = c.apply(&base, value).map_err(DiagnoseError::Input)?;
+        Ok(self.scored(m, j, simulated, at.factors.clone(), Some(value)))
+    }
+
+    /// Fits a sensor artifact (a tape joint) at `at`: it adds to the measured amplitudes
+    /// in power, so the time domain of `at` serves every trial value.
+    pub fn fit_artifact(&self, at: &Evaluated, c: &Candidate) -> Result<Evaluated, DiagnoseError> {
+        debug_assert!(c.effect == Effect::SensorArtifact);
+        let bounds = [Bounds {
+            lo: c.param.lo,
+            hi: c.param.hi,
+            log: c.param.log,
+        }];
+        let shaft_ratios = ratios(&at.model);
+        let with_joint = |value: f64| -> Option<(Vec<f64>, Option<sensor::TapeJoint>)> {
+            let (_, j) = c.apply(&at.model, value).ok()?;
+            let mut v = at.simulated.clone();
+            sensor::add_joint(&self.observed, &shaft_ratios, j.as_ref(), &mut v);
+            Some((v, j))
+        };
+        let fit = levenberg_marquardt(&[c.param.start], &bounds, 20, 1e-4, 1, &|x| {
+            with_joint(x[0]).map(|(v, _)| self.fit_z(&v))
+        });
+        let value = fit.map_or(c.param.start, |f| f.x[0]);
+        let (simulated, joint) =
+            with_joint(value).ok_or_else(|| DiagnoseError::Input("bad tape joint".into()))?;
+        Ok(self.scored(
+            at.model.clone(),
+            joint,
+            simulated,
+            at.factors.clone(),
+            Some(value),
+        ))
+    }
+}
