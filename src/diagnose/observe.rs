@@ -97,6 +97,10 @@ pub struct Observation {
     pub measured_rpm: f64,
     /// Its noise, rpm (one σ).
     pub sigma_rpm: f64,
+    /// The noise of each estimate whose magnitudes were averaged into `measured_rpm`, rpm
+    /// (one σ): `sigma_rpm` for a steady amplitude (one estimate), one STFT window's for
+    /// a run-up bin. It sets the Rayleigh/Rice bias, which averaging magnitudes keeps.
+    pub bias_sigma_rpm: f64,
 }
 
 /// Every recording analysed.
@@ -332,6 +336,7 @@ fn push_steady(
                 time_s,
                 measured_rpm: o.amplitude,
                 sigma_rpm: sigma.max(MIN_SIGMA_RPM),
+                bias_sigma_rpm: sigma.max(MIN_SIGMA_RPM),
             });
         }
     }

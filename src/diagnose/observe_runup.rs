@@ -9,6 +9,12 @@ use crate::signal::Analysis;
 
 /// Hann window's equivalent noise bandwidth, bins.
 const HANN_ENBW: f64 = 1.5;
+/// Variance of a noise-only window magnitude (Rayleigh) over σ² per component.
+const RAYLEIGH_VARIANCE: f64 = 2.0 - std::f64::consts::FRAC_PI_2;
+/// The quantile over orders that [`window_scatter`] takes: low, so that the orders that
+/// carry only noise set it, not those whose amplitude changes across the bin.
+const SCATTER_QUANTILE: f64 = 0.25;
+
 /// Fewest windows a bin needs.
 const MIN_WINDOWS: usize = 2;
 
@@ -92,6 +98,42 @@ pub fn bin_tracks(
     (tracks, count)
 }
 
+/// One window's noise σ per bin, rpm, from the scatter of consecutive windows' track
+/// amplitudes within the bin (`tracks[order][window]`): per order `mean((Δa)²)/2`
+/// (differences remove the sweep's slow trend), its [`SCATTER_QUANTILE`] over orders,
+/// taken as a noise-only magnitude's variance. Pulse jitter makes the noise grow with
+/// speed², so one value per record understates it at the top of a run-up. 0 where a bin
+/// has fewer than two consecutive windows.
+pub(super) fn window_scatter(
+    tracks: &[Vec<f64>],
+    window_bins: &[Option<usize>],
+    n_bins: usize,
+) -> Vec<f64> {
+    (0..n_bins)
+        .map(|b| {
+            let mut per_order: Vec<f64> = tracks
+                .iter()
+                .filter_map(|track| {
+                    let (sum, n) = track
+                        .windows(2)
+                        .zip(window_bins.windows(2))
+                        .filter(|(_, w)| w[0] == Some(b) && w[1] == Some(b))
+                        .map(|(a, _)| (a[1] - a[0]).powi(2) / 2.0)
+                        .filter(|v| v.is_finite())
+                        .fold((0.0, 0usize), |(s, n), v| (s + v, n + 1));
+                    (n > 0).then(|| sum / n as f64)
+                })
+                .collect();
+            if per_order.is_empty() {
+                return 0.0;
+            }
+            per_order.sort_by(f64::total_cmp);
+            let k = ((per_order.len() - 1) as f64 * SCATTER_QUANTILE).round() as usize;
+            (per_order[k] / RAYLEIGH_VARIANCE).sqrt()
+        })
+        .collect()
+}
+
 /// Pushes the binned order tracks of run-up `run` (`noise`: sample noise per station of
 /// `analysis`, rpm).
 pub fn push_run_up(observed: &mut Observed, run: usize, analysis: &Analysis, noise: &[f64]) {
@@ -104,7 +146,12 @@ pub fn push_run_up(observed: &mut Observed, run: usize, analysis: &Analysis, noi
     let window_samples = (0.1 * r.rate_hz).max(1.0);
     let middle = r.duration_s / 2.0;
     for ((station, tracks), sigma_n) in analysis.stations.iter().zip(&tracks).zip(noise) {
-        let sigma_window = sigma_n * (2.0 / window_samples).sqrt() * HANN_ENBW.sqrt();
+        let sigma_record = sigma_n * (2.0 / window_samples).sqrt() * HANN_ENBW.sqrt();
+        let scatter = station
+            .stft
+            .as_ref()
+            .map(|s| window_scatter(&s.order_tracks_rpm, &window_bins, speeds.len()))
+            .unwrap_or_default();
         for (order, track) in stft.orders.iter().zip(tracks) {
             for (b, (&a, &v)) in track.iter().zip(&speeds).enumerate() {
                 if !(a.is_finite() && v.is_finite()) {
@@ -112,6 +159,7 @@ pub fn push_run_up(observed: &mut Observed, run: usize, analysis: &Analysis, noi
                 }
                 // Half-overlapping windows: about one independent estimate per 1.5.
                 let independent = (count[b] as f64 / 1.5).max(1.0);
+                let sigma_window = sigma_record.max(scatter.get(b).copied().unwrap_or(0.0));
                 observed.observations.push(Observation {
                     run,
                     part: b,
@@ -121,6 +169,7 @@ pub fn push_run_up(observed: &mut Observed, run: usize, analysis: &Analysis, noi
                     time_s: middle,
                     measured_rpm: a,
                     sigma_rpm: (sigma_window / independent.sqrt()).max(1e-4),
+                    bias_sigma_rpm: sigma_window.max(1e-4),
                 });
             }
         }

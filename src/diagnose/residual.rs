@@ -4,7 +4,9 @@
 //! noise of σ per component, so it is biased up where the signal is small (Rayleigh, Rice):
 //! its mean is close to `√(A² + (π/2)σ²)`, exact for `A = 0` and within `σ²/(4A)` for
 //! `A ≫ σ`. The residual compares with that mean, and divides by the noise with a model
-//! floor: `z = (a − √(A² + (π/2)σ²)) / √(σ² + (FLOOR·A)²)`.
+//! floor: `z = (a − √(A² + (π/2)σ_b²)) / √(σ² + (FLOOR·A)²)`, where `σ_b` is the noise
+//! of one averaged estimate (a run-up bin averages window magnitudes: its spread falls
+//! with their number, its bias does not) and `σ` that of `a` itself.
 
 use super::observe::{Observed, Regime};
 use std::f64::consts::FRAC_PI_2;
@@ -34,7 +36,7 @@ pub fn z_scores(observed: &Observed, simulated: &[f64]) -> Vec<f64> {
                 _ => FLOOR,
             };
             let sigma = (o.sigma_rpm.powi(2) + (floor * a).powi(2)).sqrt();
-            (o.measured_rpm - expected(a, o.sigma_rpm)) / sigma
+            (o.measured_rpm - expected(a, o.bias_sigma_rpm)) / sigma
         })
         .collect()
 }

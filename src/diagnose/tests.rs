@@ -117,3 +117,38 @@ fn regimes_alternate_between_fit_and_held_out() {
         "{held_runs:?}"
     );
 }
+
+/// A run-up bin's window noise from the scatter of consecutive windows: twelve orders of
+/// pure noise (Rayleigh magnitudes of σ = 0.3 per component) and four strong orders that
+/// rise steeply across the bin give back σ within the scatter of 12 × 39 differences;
+/// a bin of one window gives 0.
+#[test]
+fn run_up_window_noise_comes_from_the_bin_scatter() {
+    let sigma = 0.3;
+    let mut rng = Rng::new(11);
+    let windows = 40;
+    let mut tracks: Vec<Vec<f64>> = (0..12)
+        .map(|_| {
+            (0..windows)
+                .map(|_| (sigma * rng.normal()).hypot(sigma * rng.normal()))
+                .collect()
+        })
+        .collect();
+    tracks.extend((0..4).map(|k| {
+        (0..windows)
+            .map(|w| 5.0 + k as f64 + 0.5 * w as f64)
+            .collect::<Vec<f64>>()
+    }));
+    let mut bins: Vec<Option<usize>> = vec![Some(0); windows];
+    bins.push(Some(1));
+    tracks.iter_mut().for_each(|t| t.push(1.0));
+    let scatter = super::observe_runup::window_scatter(&tracks, &bins, 2);
+    // Consecutive differences of independent magnitudes: the estimate's relative spread
+    // is about 1/√(2·39) per order, the lower quartile of twelve a little below σ.
+    assert!(
+        scatter[0] > 0.7 * sigma && scatter[0] < 1.2 * sigma,
+        "σ {} vs {sigma}",
+        scatter[0]
+    );
+    assert_eq!(scatter[1], 0.0);
+}
