@@ -19,9 +19,9 @@ use std::collections::BTreeMap;
 
 /// Held-out χ²/N under which the user's model is taken to fit.
 pub const NONE_CHI2: f64 = 2.0;
-/// An effect must lower the plain fit's score by this fraction. On the shipped controls
-/// the best effect gains at most 3 % over the plain fit (`parameter_error`); the weakest
-/// real effect named right gains 57 % (hysteretic damping).
+/// An effect must lower the plain fit's score by this fraction. On the shipped
+/// `parameter_error` control no effect beats the plain fit; the weakest real effect named
+/// right gains 61 % (hysteretic damping).
 pub const EFFECT_MARGIN: f64 = 0.15;
 
 fn number(x: f64) -> ParameterValue {
