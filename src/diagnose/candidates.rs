@@ -15,6 +15,7 @@
 //! | `cylinder_imbalance` | each cylinder | `pressure_scale` | 0.95 |
 //! | `sensor_artifact` | each station | tape `joint_fraction` | 0.02 |
 
+use super::fit::Bounds;
 use super::sensor::TapeJoint;
 use crate::model::{ConnectionKind, Model};
 use crate::synth::{Effect, EffectSpec, build_truth};
@@ -32,6 +33,17 @@ pub struct Param {
     pub hi: f64,
     /// Fitted as its logarithm (positive scale-like values).
     pub log: bool,
+}
+
+impl Param {
+    /// Its bounds for a fit.
+    pub fn bounds(&self) -> Bounds {
+        Bounds {
+            lo: self.lo,
+            hi: self.hi,
+            log: self.log,
+        }
+    }
 }
 
 /// One candidate: an effect at one place, with one fitted parameter.

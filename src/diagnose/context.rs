@@ -166,7 +166,6 @@ impl Context<'_> {
         candidate: Option<&Candidate>,
         free: &[usize],
     ) -> Result<Evaluated, DiagnoseError> {
-        let n = self.plain.len();
         let full = |x: &[f64]| -> Vec<f64> {
             let mut f = at.factors.clone();
             for (k, i) in free.iter().enumerate() {
@@ -185,11 +184,7 @@ impl Context<'_> {
         let mut bounds = vec![PLAIN_BOUNDS; free.len()];
         if let Some(c) = candidate {
             start.push(at.value.unwrap_or(c.param.start));
-            bounds.push(Bounds {
-                lo: c.param.lo,
-                hi: c.param.hi,
-                log: c.param.log,
-            });
+            bounds.push(c.param.bounds());
         }
         let correction = self.correction(at);
         let predict = |x: &[f64]| -> Option<Vec<f64>> {
@@ -237,7 +232,6 @@ impl Context<'_> {
         let simulated = predict(&x).ok_or_else(|| DiagnoseError::Input("bad fit".into()))?;
         let factors = full(&x);
         let value = candidate.map(|_| x[free.len()]);
-        debug_assert!(factors.len() == n);
         Ok(self.scored(m, j, simulated, factors, value))
     }
 

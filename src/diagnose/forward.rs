@@ -25,12 +25,12 @@ const STEADY_MIN_CYCLES: f64 = 8.0;
 /// an order amplitude by less than that, and the slow rigid-body remainder of the speed
 /// governor, which dominates it, falls below every analysed order. The transient
 /// module's default (1e-4) takes 5–6 times as many cycles here.
-pub const SETTLE_TOLERANCE: f64 = 2e-3;
+const SETTLE_TOLERANCE: f64 = 2e-3;
 /// Longest settling of a simulated run, s: a driveline settles to [`SETTLE_TOLERANCE`] in
 /// 20–40 working cycles (under 1 s above 1000 rpm); one that has not by then is rattling
 /// (gear backlash), never settles, and is recorded as it is — its orders then carry the
 /// rattle as the bench's do.
-pub const MAX_SETTLE_S: f64 = 6.0;
+const MAX_SETTLE_S: f64 = 6.0;
 /// The simulation's output rate over the recording's (orders above the recording's
 /// Nyquist frequency must not fold back onto engine orders).
 const OVERSAMPLING: f64 = 4.0;
@@ -43,28 +43,34 @@ fn warms_up(model: &Model) -> bool {
         .any(|c| matches!(&c.kind, ConnectionKind::Rubber(r) if r.thermal.is_some()))
 }
 
-/// What to simulate for the steady run or long run `run` (run-ups go by segments,
-/// [`super::forward_runup`]).
-fn run_kind(model: &Model, run: &Run) -> RunKind {
+/// The steady simulation of a steady regime or long run, `(speed_rpm, duration_s)`;
+/// `None` for a run-up (simulated by segments, [`super::forward_runup`]).
+fn steady_record(model: &Model, run: &Run) -> Option<(f64, f64)> {
     let cycle_s = |speed_rpm: f64| 120.0 / speed_rpm.max(1.0);
     let short = |speed_rpm: f64| STEADY_MIN_S.max(STEADY_MIN_CYCLES * cycle_s(speed_rpm));
     match run.regime {
-        Regime::Steady { speed_rpm } => RunKind::Steady {
+        Regime::Steady { speed_rpm } => Some((speed_rpm, run.duration_s.min(short(speed_rpm)))),
+        Regime::LongRun { speed_rpm } => Some((
             speed_rpm,
-            duration_s: run.duration_s.min(short(speed_rpm)),
-        },
-        Regime::LongRun { speed_rpm } => RunKind::Steady {
-            speed_rpm,
-            duration_s: if warms_up(model) {
+            if warms_up(model) {
                 run.duration_s
             } else {
                 short(speed_rpm)
             },
-        },
-        Regime::RunUp { from_rpm, .. } => RunKind::Steady {
-            speed_rpm: from_rpm,
-            duration_s: run.duration_s,
-        },
+        )),
+        Regime::RunUp { .. } => None,
+    }
+}
+
+/// The time domain's settings for a run of the diagnosis at `load`, output at
+/// [`OVERSAMPLING`] times the recording's `rate_hz`.
+pub(super) fn run_options(load: f64, rate_hz: f64) -> RunOptions {
+    RunOptions {
+        load,
+        rate_hz: OVERSAMPLING * rate_hz,
+        settle_tolerance: SETTLE_TOLERANCE,
+        max_settle_s: MAX_SETTLE_S,
+        ..RunOptions::default()
     }
 }
 
@@ -116,14 +122,13 @@ fn predict_run(
     max_order: f64,
 ) -> Result<Vec<(usize, f64)>, String> {
     let run = &observed.runs[r];
-    let kind = run_kind(model, run);
-    let options = RunOptions {
-        load: run.load,
-        rate_hz: OVERSAMPLING * run.rate_hz,
-        settle_tolerance: SETTLE_TOLERANCE,
-        max_settle_s: MAX_SETTLE_S,
-        ..RunOptions::default()
+    let (speed_rpm, duration_s) =
+        steady_record(model, run).ok_or("a run-up is simulated by segments")?;
+    let kind = RunKind::Steady {
+        speed_rpm,
+        duration_s,
     };
+    let options = run_options(run.load, run.rate_hz);
     let sim = simulate(model, kind, options, &mut |_| true).map_err(|e| e.to_string())?;
     let rec = station_recording(&sim, run, RecKind::Steady)?;
     let analysis_opts = analysis_options(max_order);
@@ -187,9 +192,7 @@ pub fn predict(
     }
     let cost = |j: &Job| match j {
         Job::Segment(s) => s.cost_s(observed),
-        Job::Run(r) => match run_kind(model, &observed.runs[*r]) {
-            RunKind::Steady { duration_s, .. } | RunKind::Ramp { duration_s, .. } => duration_s,
-        },
+        Job::Run(r) => steady_record(model, &observed.runs[*r]).map_or(0.0, |(_, d)| d),
     };
     jobs.sort_by(|a, b| cost(b).total_cmp(&cost(a)));
     let next = AtomicUsize::new(0);
@@ -209,14 +212,8 @@ pub fn predict(
                         ),
                         Job::Segment(seg) => (
                             seg.run,
-                            forward_runup::predict_segment(
-                                model,
-                                observed,
-                                *seg,
-                                max_order,
-                                OVERSAMPLING * observed.runs[seg.run].rate_hz,
-                            )
-                            .map(Done::Sums),
+                            forward_runup::predict_segment(model, observed, *seg, max_order)
+                                .map(Done::Sums),
                         ),
                     };
                     match result {

@@ -10,7 +10,7 @@ use super::observe_runup::bins;
 use crate::model::Model;
 use crate::recording::RunKind as RecKind;
 use crate::signal::analyse_with;
-use crate::transient::{RunKind, RunOptions, simulate};
+use crate::transient::{RunKind, simulate};
 use std::collections::BTreeMap;
 
 /// Run-ups shorter than this are one segment, s.
@@ -82,7 +82,6 @@ pub fn predict_segment(
     observed: &Observed,
     seg: Segment,
     max_order: f64,
-    rate_hz: f64,
 ) -> Result<BinSums, String> {
     let run = &observed.runs[seg.run];
     let Regime::RunUp { from_rpm, to_rpm } = run.regime else {
@@ -96,13 +95,7 @@ pub fn predict_segment(
         to_rpm: from_rpm + slope * seg.to_s,
         duration_s: seg.to_s - start,
     };
-    let options = RunOptions {
-        load: run.load,
-        rate_hz,
-        settle_tolerance: super::forward::SETTLE_TOLERANCE,
-        max_settle_s: super::forward::MAX_SETTLE_S,
-        ..RunOptions::default()
-    };
+    let options = super::forward::run_options(run.load, run.rate_hz);
     let sim = simulate(model, kind, options, &mut |_| true).map_err(|e| e.to_string())?;
     let rec = super::forward::station_recording(&sim, run, RecKind::RunUp)?;
     let mut rec = slice(&rec, lead, lead + seg.to_s - seg.from_s);

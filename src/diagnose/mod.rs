@@ -15,8 +15,8 @@
 //!   the linear surrogate (what the fits move on).
 //! - [`candidates`]: the effects of the spec's table as model extensions with few
 //!   parameters (they are the effects [`crate::synth`] can add), each with its signature.
-//! - [`fit`]: Levenberg–Marquardt on the effect's parameters together with the scale
-//!   factors of the plain parameters they could be confused with.
+//! - [`fit`]: Levenberg–Marquardt on the effect's parameter together with the scale
+//!   factors of the plain parameters it could be confused with (all of them).
 //! - [`screen`]: every candidate fitted cheaply (surrogate, or the time domain of only the
 //!   recordings that show it; an effect whose signature is absent is not fitted), the
 //!   best three by the fitted data verified in the time domain ([`rounds`]).

@@ -5,7 +5,7 @@
 use super::DiagnoseError;
 use super::candidates::Candidate;
 use super::context::{Context, Evaluated};
-use super::fit::{Bounds, levenberg_marquardt};
+use super::fit::levenberg_marquardt;
 use super::sensor;
 use super::surrogate::{ratios, scaled};
 use crate::synth::Effect;
@@ -144,11 +144,7 @@ impl Context<'_> {
     /// in power, so the time domain of `at` serves every trial value.
     pub fn fit_artifact(&self, at: &Evaluated, c: &Candidate) -> Result<Evaluated, DiagnoseError> {
         debug_assert!(c.effect == Effect::SensorArtifact);
-        let bounds = [Bounds {
-            lo: c.param.lo,
-            hi: c.param.hi,
-            log: c.param.log,
-        }];
+        let bounds = [c.param.bounds()];
         let shaft_ratios = ratios(&at.model);
         let with_joint = |value: f64| -> Option<(Vec<f64>, Option<sensor::TapeJoint>)> {
             let (_, j) = c.apply(&at.model, value).ok()?;

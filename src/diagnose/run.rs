@@ -83,8 +83,8 @@ pub fn diagnose(
         // A candidate whose model cannot be built or run is left out, not fatal.
         match screen_one(&cx, &plain_fit, c) {
             Ok(s) => screened.push(s),
-            Err((DiagnoseError::Cancelled, _)) => return Err(DiagnoseError::Cancelled),
-            Err((_, why)) => implausible.push((c.name(), why)),
+            Err(DiagnoseError::Cancelled) => return Err(DiagnoseError::Cancelled),
+            Err(why) => implausible.push((c.name(), why.to_string())),
         }
     }
     let k_plain = cx.plain.len();

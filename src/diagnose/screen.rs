@@ -1,9 +1,9 @@
 //! Screening and verification of the candidates: the time domain is the costly part of a
 //! diagnosis, so every candidate is first fitted cheaply — on the linear surrogate with
-//! the plain parameters it could be confused with, or, for effects the linear model
-//! cannot represent, in the time domain of only the runs that show them — and only the
-//! few whose screened score beats the plain fit are run on the whole campaign in the time
-//! domain, where they are scored. Only those can become the verdict.
+//! all plain parameters, or, for effects the linear model cannot represent, in the time
+//! domain of only the runs that show them — and only the few whose screened score beats
+//! the plain fit are run on the whole campaign in the time domain, where they are scored.
+//! Only those can become the verdict.
 
 use super::DiagnoseError;
 use super::candidates::Candidate;
@@ -91,20 +91,16 @@ fn torque_reversal_runs(cx: &Context, e: &Evaluated, name: &str) -> Vec<bool> {
         .collect()
 }
 
-/// Screens one candidate around the plain fit `plain`; `None` when it is not plausible
-/// (its signature is absent) or cannot be fitted, with the reason.
+/// Screens one candidate around the plain fit `plain`; an error when it is not plausible
+/// (its signature is absent: [`DiagnoseError::Input`] says why) or cannot be fitted.
 pub fn screen_one(
     cx: &Context,
     plain: &Evaluated,
     c: &Candidate,
-) -> Result<Screened, (DiagnoseError, String)> {
-    let fail = |e: DiagnoseError| {
-        let why = e.to_string();
-        (e, why)
-    };
+) -> Result<Screened, DiagnoseError> {
     let (evaluated, verified, note) = match c.effect {
         Effect::SensorArtifact => (
-            cx.fit_artifact(plain, c).map_err(fail)?,
+            cx.fit_artifact(plain, c)?,
             true,
             "fitted on the plain fit's time domain (a tape joint adds in power)".to_string(),
         ),
@@ -118,16 +114,15 @@ pub fn screen_one(
                 runs.iter_mut().zip(&steady).for_each(|(a, b)| *a &= *b);
             }
             if !runs.contains(&true) {
-                let why = format!(
+                return Err(DiagnoseError::Input(format!(
                     "not plausible: in no recording does the torque in `{gear}` reverse (its \
                      vibratory torque stays below {:.0} % of the mean), so free play never \
                      opens",
                     100.0 * REVERSAL_FRACTION
-                );
-                return Err((DiagnoseError::Input(why.clone()), why));
+                )));
             }
             (
-                cx.fit_time_domain(plain, c, &runs).map_err(fail)?,
+                cx.fit_time_domain(plain, c, &runs)?,
                 false,
                 "screened in the time domain of the recordings where its torque can reverse"
                     .to_string(),
@@ -138,7 +133,7 @@ pub fn screen_one(
             // simulated for a few cycles only).
             let long = runs_where(cx, |r| !matches!(r, Regime::Steady { .. }));
             (
-                cx.fit_time_domain(plain, c, &long).map_err(fail)?,
+                cx.fit_time_domain(plain, c, &long)?,
                 false,
                 "screened in the time domain of the long run and the run-up".to_string(),
             )
@@ -147,7 +142,7 @@ pub fn screen_one(
             debug_assert!(linear_sees(c.effect));
             let all: Vec<usize> = (0..cx.plain.len()).collect();
             (
-                cx.propose(plain, Some(c), &all).map_err(fail)?,
+                cx.propose(plain, Some(c), &all)?,
                 false,
                 "screened on the linear model".to_string(),
             )
