@@ -312,6 +312,7 @@ mod tests {
                     ParameterValue::Number(0.1),
                 )]),
                 explanation: "word ".repeat(40),
+                equivalent_places: Vec::new(),
             },
             mismatches: (0..12).map(|i| mismatch(9.0 - f64::from(i))).collect(),
             candidates: vec![candidate("gear_backlash", 0.5), candidate("none", 2.0)],

@@ -161,6 +161,7 @@ mod tests {
                 confidence: 0.5,
                 parameters: map(verdict),
                 explanation: String::new(),
+                equivalent_places: Vec::new(),
             },
             mismatches: vec![],
             candidates: vec![Row {

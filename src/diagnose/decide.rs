@@ -13,6 +13,7 @@
 use super::context::{Context, Evaluated};
 use super::holdout::{held_out_labels, roles};
 use super::observe::Regime;
+use super::places::{SAME_Z, equivalent_places};
 use super::report::*;
 use super::screen::Screened;
 use std::collections::BTreeMap;
@@ -88,6 +89,7 @@ pub fn report(
                 verified: s.verified,
             },
             evaluated: e,
+            candidate: c,
         });
     }
     // Keep the best place of each effect, a verified one before any only screened.
@@ -136,6 +138,7 @@ pub fn report(
                     "The model fits the held-out recordings within their noise (χ²/N = {before:.2}); \
                      nothing is missing and no parameter needs changing."
                 ),
+                equivalent_places: Vec::new(),
             },
             baseline,
         )
@@ -146,6 +149,20 @@ pub fn report(
                 parameters.insert(k.clone(), v.clone());
             }
         }
+        let all: Vec<super::candidates::Candidate> =
+            screened.iter().map(|s| s.candidate.clone()).collect();
+        let equivalent = equivalent_places(cx, &all, b.candidate, b.evaluated);
+        let also = if equivalent.is_empty() {
+            String::new()
+        } else {
+            format!(
+                " At {} {} it would predict the same amplitudes (within {SAME_Z} σ): the \
+                 recordings cannot tell these places apart, and the place named is only \
+                 where the fit settled.",
+                b.candidate.fixed.first().map_or("", |(k, _)| *k),
+                equivalent.join(", ")
+            )
+        };
         let runner_up = candidates
             .get(1)
             .filter(|c| c.out.verified)
@@ -158,12 +175,13 @@ pub fn report(
                 explanation: format!(
                     "The model misses {}: with it ({}), fitted together with the plain \
                      parameters, the held-out χ²/N falls from {before:.2} to {:.2}, against \
-                     {:.2} for the plain parameters alone.",
+                     {:.2} for the plain parameters alone.{also}",
                     b.out.effect,
                     b.name,
                     b.out.residual_after,
                     cx.chi2(plain, true)
                 ),
+                equivalent_places: equivalent,
             },
             b.evaluated,
         )
@@ -204,6 +222,7 @@ pub fn report(
                      the user's value.",
                     cx.chi2(plain, true)
                 ),
+                equivalent_places: Vec::new(),
             },
             plain,
         )
@@ -242,6 +261,7 @@ struct Candidate_<'a> {
     name: String,
     out: super::report::Candidate,
     evaluated: &'a Evaluated,
+    candidate: &'a super::candidates::Candidate,
 }
 
 /// The label of a run's kind for the report.

@@ -72,10 +72,19 @@ pub fn levenberg_marquardt(
     let mut cost: f64 = r.iter().map(|v| v * v).sum();
     let mut lambda = 1e-2;
     for _ in 0..max_iterations {
-        // Forward differences: a relative step in the internal coordinate.
+        // Forward differences: a relative step in the internal coordinate, backward from
+        // the upper bound (a step past a bound is clamped back, and the parameter would
+        // look inert there and never leave it).
         let mut jac = DMatrix::<f64>::zeros(r.len(), n);
         let steps: Vec<f64> = (0..n)
-            .map(|j| 1e-3 * u[j].abs().max(if bounds[j].log { 1.0 } else { 1e-2 }))
+            .map(|j| {
+                let h = 1e-3 * u[j].abs().max(if bounds[j].log { 1.0 } else { 1e-2 });
+                if to_external(u[j] + h, &bounds[j]) < bounds[j].hi {
+                    h
+                } else {
+                    -h
+                }
+            })
             .collect();
         let column = |j: usize| {
             let mut up = u.clone();
@@ -218,5 +227,21 @@ mod tests {
         })
         .unwrap();
         assert!(fit.x[1] >= 1.0);
+    }
+
+    /// A parameter started at its upper bound comes back when the minimum is inside (a
+    /// forward difference there is clamped to zero and would keep it at the bound).
+    #[test]
+    fn leaves_an_upper_bound() {
+        let bounds = [Bounds {
+            lo: 0.7,
+            hi: 1.3,
+            log: true,
+        }];
+        let fit = levenberg_marquardt(&[1.3], &bounds, 50, 1e-10, 1, &|x| {
+            Some(vec![x[0] - 1.1, 2.0 * (x[0] - 1.1)])
+        })
+        .unwrap();
+        assert!((fit.x[0] - 1.1).abs() < 1e-6, "{:?}", fit.x);
     }
 }

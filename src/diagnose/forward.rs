@@ -182,8 +182,10 @@ pub fn predict(
             continue;
         }
         match run.regime {
+            // A rubber stage that warms up carries its temperature through the whole
+            // run-up: a segment would start it cold again.
             Regime::RunUp { .. } => jobs.extend(
-                forward_runup::segments(observed, r, threads)
+                forward_runup::segments(observed, r, if warms_up(model) { 1 } else { threads })
                     .into_iter()
                     .map(Job::Segment),
             ),

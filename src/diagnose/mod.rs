@@ -19,14 +19,19 @@
 //!   factors of the plain parameters it could be confused with (all of them).
 //! - [`screen`]: every candidate fitted cheaply (surrogate, or the time domain of only the
 //!   recordings that show it; an effect whose signature is absent is not fitted), the
-//!   best three by the fitted data verified in the time domain ([`rounds`]).
-//! - [`decide`]: held-out scoring with a parameter penalty and the verdict.
+//!   best three by the fitted data verified in the time domain ([`rounds`]). Thermal
+//!   drift needs a drifting long run ([`drift`]).
+//! - [`restart`]: every candidate the linear model sees also fitted from the user's
+//!   values, where the plain fit has not bent the plain parameters to stand in for it.
+//! - [`decide`]: held-out scoring with a parameter penalty and the verdict; [`places`]
+//!   the places of an effect the recordings cannot tell apart.
 //! - [`report`]: the JSON of the spec; [`html`] the page for a person.
 
 pub mod accept;
 pub mod candidates;
 pub mod context;
 pub mod decide;
+pub mod drift;
 pub mod fit;
 pub mod forward;
 pub mod forward_runup;
@@ -34,9 +39,11 @@ pub mod holdout;
 pub mod html;
 pub mod observe;
 pub mod observe_runup;
+pub mod places;
 pub mod report;
 pub mod report_parts;
 pub mod residual;
+pub mod restart;
 pub mod rounds;
 pub mod run;
 pub mod screen;

@@ -66,6 +66,11 @@ pub struct Verdict {
     pub parameters: BTreeMap<String, ParameterValue>,
     /// One paragraph a person reads.
     pub explanation: String,
+    /// Extension: other places of the effect that fit the recordings exactly as well
+    /// (e.g. the other cylinders of an in-line four, which order amplitudes without phase
+    /// cannot tell apart); empty, and left out of the JSON, when the place is determined.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub equivalent_places: Vec<String>,
 }
 
 /// One place where the user's model and the recordings disagree.

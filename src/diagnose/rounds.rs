@@ -78,54 +78,82 @@ impl Context<'_> {
             (p.hi - p.lo) / 8.0
         };
         let (lo, hi) = (from_x(p.lo), from_x(p.hi));
-        // The best point's simulation is kept: it is the result.
-        let mut kept: Option<(f64, f64, Vec<f64>)> = None;
-        let mut cost_at = |u: f64| -> f64 {
+        // One value's cost and simulation (`None`: it could not be simulated).
+        let cost_at = |u: f64| -> Option<(f64, f64, Vec<f64>)> {
             let value = to_x(u.clamp(lo, hi));
-            let simulated = c.apply(&base, value).ok().and_then(|(m, j)| {
-                self.simulate(&m, j.as_ref(), Some((runs, &at.simulated)))
-                    .ok()
-            });
-            let Some(s) = simulated else {
-                return f64::INFINITY;
-            };
+            let (m, j) = c.apply(&base, value).ok()?;
+            let s = self
+                .simulate(&m, j.as_ref(), Some((runs, &at.simulated)))
+                .ok()?;
             let cost = self.fit_z(&s).iter().map(|z| z * z).sum::<f64>();
-            if kept.as_ref().is_none_or(|k| cost < k.1) {
-                kept = Some((u, cost, s));
+            Some((u, cost, s))
+        };
+        // Values of one stage run side by side, one per thread: a screening often
+        // simulates a single long record, which would leave the other threads idle.
+        let threads = self.options.threads.max(1);
+        let mut kept: Option<(f64, f64, Vec<f64>)> = None;
+        let mut tried: Vec<(f64, f64)> = Vec::new();
+        type Kept = Option<(f64, f64, Vec<f64>)>;
+        let stage = |us: &[f64], kept: &mut Kept, tried: &mut Vec<(f64, f64)>| {
+            let results: Vec<(f64, Kept)> = us
+                .chunks(threads)
+                .flat_map(|chunk| {
+                    std::thread::scope(|scope| {
+                        let handles: Vec<_> = chunk
+                            .iter()
+                            .map(|u| {
+                                let u = u.clamp(lo, hi);
+                                (u, scope.spawn(move || cost_at(u)))
+                            })
+                            .collect();
+                        handles
+                            .into_iter()
+                            .map(|(u, h)| (u, h.join().ok().flatten()))
+                            .collect::<Vec<_>>()
+                    })
+                })
+                .collect();
+            for (u, r) in results {
+                let cost = r.as_ref().map_or(f64::INFINITY, |r| r.1);
+                tried.push((u, cost));
+                if let Some(r) = r.filter(|r| kept.as_ref().is_none_or(|k| r.1 < k.1)) {
+                    *kept = Some(r);
+                }
             }
-            cost
         };
         let centre = from_x(p.start);
         let half = (SEARCH_GRID / 2) as f64;
-        let mut tried: Vec<(f64, f64)> = (0..SEARCH_GRID)
-            .map(|k| (centre + (k as f64 - half) * step).clamp(lo, hi))
-            .map(|u| (u, cost_at(u)))
+        let grid: Vec<f64> = (0..SEARCH_GRID)
+            .map(|k| centre + (k as f64 - half) * step)
             .collect();
-        let mut best = tried
-            .iter()
-            .copied()
-            .min_by(|a, b| a.1.total_cmp(&b.1))
-            .unwrap_or((centre, f64::INFINITY));
+        stage(&grid, &mut kept, &mut tried);
+        let best_of = |kept: &Kept| {
+            kept.as_ref()
+                .map_or((centre, f64::INFINITY), |k| (k.0, k.1))
+        };
         let mut h = step;
         for _ in 0..SEARCH_HALVINGS {
             h /= 2.0;
-            for u in [best.0 - h, best.0 + h] {
-                let u = u.clamp(lo, hi);
-                let point = (u, cost_at(u));
-                tried.push(point);
-                if point.1 < best.1 {
-                    best = point;
-                }
-            }
+            let (b, _) = best_of(&kept);
+            stage(&[b - h, b + h], &mut kept, &mut tried);
         }
         // The parabola through the best and its two neighbours at ±h, when it has a
         // minimum between them.
-        let near = |u: f64| tried.iter().find(|t| (t.0 - u).abs() < 1e-12 * h.max(1.0));
+        let best = best_of(&kept);
+        let near = |u: f64| {
+            tried
+                .iter()
+                .find(|t| (t.0 - u.clamp(lo, hi)).abs() < 1e-12 * h.max(1.0))
+                .copied()
+        };
         if let (Some(a), Some(b)) = (near(best.0 - h), near(best.0 + h)) {
             let curvature = a.1 + b.1 - 2.0 * best.1;
             if curvature > 0.0 && curvature.is_finite() {
-                let u = (best.0 + 0.5 * h * (a.1 - b.1) / curvature).clamp(lo, hi);
-                cost_at(u);
+                stage(
+                    &[best.0 + 0.5 * h * (a.1 - b.1) / curvature],
+                    &mut kept,
+                    &mut tried,
+                );
             }
         }
         let Some((u, _, simulated)) = kept else {

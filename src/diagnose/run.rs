@@ -5,6 +5,7 @@
 use super::candidates::candidates;
 use super::context::Context;
 use super::observe::{Regime, observe};
+use super::restart::second_starts;
 use super::screen::{Screened, VERIFY_ROUNDS, screen_one, verify};
 use super::surrogate::plain_parameters;
 use super::{DiagnoseError, DiagnoseOptions, LabelledRecording, Report, decide, holdout};
@@ -77,7 +78,7 @@ pub fn diagnose(
     let mut implausible: Vec<(String, String)> = Vec::new();
     for (k, c) in list.iter().enumerate() {
         step(
-            0.3 + 0.3 * k as f64 / list.len() as f64,
+            0.3 + 0.2 * k as f64 / list.len() as f64,
             &format!("screening {}", c.name()),
         )?;
         // A candidate whose model cannot be built or run is left out, not fatal.
@@ -91,6 +92,19 @@ pub fn diagnose(
     let before = cx.chi2(&baseline, true);
     // When the user's model already fits, no candidate needs the time domain.
     if before > decide::NONE_CHI2 {
+        second_starts(
+            &cx,
+            &baseline,
+            &mut screened,
+            &|e| decide::fitted_score(&cx, e, k_plain),
+            &|e| decide::fitted_score(&cx, e, k_plain + 1),
+            &mut |k, n, name| {
+                step(
+                    0.5 + 0.1 * k as f64 / n.max(1) as f64,
+                    &format!("screening {name} from the user's values"),
+                )
+            },
+        )?;
         verify(
             &cx,
             &plain_fit,

@@ -8,6 +8,7 @@
 use super::DiagnoseError;
 use super::candidates::Candidate;
 use super::context::{Context, Evaluated};
+use super::drift::{DRIFT_CHI2, long_run_drift};
 use super::observe::Regime;
 use super::surrogate::{causal_system, run_speeds};
 use crate::physics::Excitation;
@@ -37,10 +38,13 @@ pub struct Screened {
     pub verified: bool,
     /// How it was screened, for the report.
     pub note: String,
+    /// `evaluated` is a time-domain run on the whole campaign (a second start that was
+    /// checked, [`super::restart`]), so verification goes on from it.
+    pub in_time_domain: bool,
 }
 
 /// Does the linear model represent this effect (so the surrogate can fit it)?
-fn linear_sees(effect: Effect) -> bool {
+pub fn linear_sees(effect: Effect) -> bool {
     !matches!(
         effect,
         Effect::CouplingThermalDrift | Effect::GearBacklash | Effect::SensorArtifact
@@ -129,8 +133,17 @@ pub fn screen_one(
             )
         }
         Effect::CouplingThermalDrift => {
+            let drift = long_run_drift(&cx.observed).unwrap_or(0.0);
+            if drift <= DRIFT_CHI2 {
+                return Err(DiagnoseError::Input(format!(
+                    "not plausible: the long run's order amplitudes do not drift (mean \
+                     square of their slopes over its noise {drift:.2}, at most {DRIFT_CHI2} \
+                     without drift), so the coupling does not warm enough to matter"
+                )));
+            }
             // A rubber stage warms up in the long runs and run-ups (the steady regimes are
-            // simulated for a few cycles only).
+            // simulated for a few cycles only). The long run alone leaves its heat
+            // capacity loose (4700 J/K for 300 on the reference campaign).
             let long = runs_where(cx, |r| !matches!(r, Regime::Steady { .. }));
             (
                 cx.fit_time_domain(plain, c, &long)?,
@@ -153,6 +166,7 @@ pub fn screen_one(
         evaluated,
         verified,
         note,
+        in_time_domain: false,
     })
 }
 
@@ -193,7 +207,9 @@ pub fn verify(
         let s = &screened[*i];
         progress(k, chosen.len(), &s.candidate.name())?;
         let c = &s.candidate;
-        let result = if linear_sees(c.effect) {
+        let result = if s.in_time_domain {
+            cx.rounds(s.evaluated.clone(), Some(c), VERIFY_ROUNDS - 1, None)
+        } else if linear_sees(c.effect) {
             cx.rounds(
                 plain.clone(),
                 Some(c),

@@ -92,6 +92,7 @@ fn report() -> Report {
                 ("factor".into(), ParameterValue::Number(0.9)),
             ]),
             explanation: "No physics is missing: the coupling is softer than the catalogue.".into(),
+            equivalent_places: Vec::new(),
         },
         mismatches: vec![],
         candidates: vec![

@@ -98,6 +98,7 @@ fn sample() -> Report {
                 ),
             ]),
             explanation: "The coupling stiffens with twist.".into(),
+            equivalent_places: Vec::new(),
         },
         mismatches: vec![Mismatch {
             recording: "Regime A".into(),
