@@ -149,9 +149,8 @@ pub fn report(
                 parameters.insert(k.clone(), v.clone());
             }
         }
-        let all: Vec<super::candidates::Candidate> =
-            screened.iter().map(|s| s.candidate.clone()).collect();
-        let equivalent = equivalent_places(cx, &all, b.candidate, b.evaluated);
+        let all = screened.iter().map(|s| &s.candidate);
+        let equivalent = equivalent_places(cx, all, b.candidate, b.evaluated);
         let also = if equivalent.is_empty() {
             String::new()
         } else {

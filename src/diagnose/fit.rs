@@ -92,7 +92,8 @@ pub fn levenberg_marquardt(
             residuals(&external(&up))
         };
         evaluations += n;
-        for (j, rj) in columns(n, threads, &column).into_iter().enumerate() {
+        // A column that could not be evaluated (or panicked) is skipped.
+        for (j, rj) in parallel_map(n, threads, &column).into_iter().enumerate() {
             let Some(rj) = rj else { continue };
             for (i, (a, b)) in rj.iter().zip(&r).enumerate() {
                 jac[(i, j)] = (a - b) / steps[j];
@@ -144,17 +145,18 @@ pub fn levenberg_marquardt(
     })
 }
 
-/// `column(j)` for `j` in `0..n`, on up to `threads` threads.
-fn columns(
+/// `each(k)` for `k` in `0..n`, on up to `threads` threads, in order. A panicking call
+/// leaves its slot `None`, like one that returns `None`.
+pub fn parallel_map<T: Send>(
     n: usize,
     threads: usize,
-    column: &(dyn Fn(usize) -> Option<Vec<f64>> + Sync),
-) -> Vec<Option<Vec<f64>>> {
+    each: &(dyn Fn(usize) -> Option<T> + Sync),
+) -> Vec<Option<T>> {
     let threads = threads.clamp(1, n.max(1));
     if threads == 1 {
-        return (0..n).map(column).collect();
+        return (0..n).map(each).collect();
     }
-    let mut out: Vec<Option<Vec<f64>>> = vec![None; n];
+    let mut out: Vec<Option<T>> = (0..n).map(|_| None).collect();
     std::thread::scope(|scope| {
         let chunks: Vec<_> = out
             .chunks_mut(n.div_ceil(threads))
@@ -163,13 +165,12 @@ fn columns(
                 let first = c * n.div_ceil(threads);
                 scope.spawn(move || {
                     for (k, slot) in chunk.iter_mut().enumerate() {
-                        *slot = column(first + k);
+                        *slot = each(first + k);
                     }
                 })
             })
             .collect();
         for c in chunks {
-            // A panicking column leaves its slots `None`: that column is skipped.
             let _ = c.join();
         }
     });

@@ -22,9 +22,9 @@ pub const SAME_Z: f64 = 0.01;
 /// `at`'s plain parameters, predicts the same amplitudes within [`SAME_Z`]. Only effects
 /// the linear model represents are compared (it is blind to backlash, thermal drift and
 /// tape joints, so every place of those would look alike).
-pub fn equivalent_places(
+pub fn equivalent_places<'a>(
     cx: &Context,
-    all: &[Candidate],
+    all: impl IntoIterator<Item = &'a Candidate>,
     chosen: &Candidate,
     at: &Evaluated,
 ) -> Vec<String> {
@@ -43,7 +43,7 @@ pub fn equivalent_places(
         return Vec::new();
     };
     let place = |c: &Candidate| c.fixed.first().map(|(_, v)| v.clone());
-    all.iter()
+    all.into_iter()
         .filter(|c| c.effect == chosen.effect && place(c) != place(chosen))
         .filter(|c| {
             z_at(c).is_some_and(|z| {

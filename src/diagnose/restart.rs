@@ -10,8 +10,8 @@
 //! The surrogate is least accurate there (its time-domain correction was taken at the
 //! user's model, and the fit moves away from it), so its cost only ranks these second
 //! starts against the plain parameters' own fit from the same point. The best
-//! [`CHECKED`] effects that beat it are run in the time domain, and a candidate keeps the second
-//! start when it scores better there than its first did.
+//! [`CHECKED`] effects that beat it are run in the time domain, and a candidate keeps
+//! the second start when it scores better there than its first did.
 
 use super::DiagnoseError;
 use super::context::{Context, Evaluated};

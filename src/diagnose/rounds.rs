@@ -5,7 +5,7 @@
 use super::DiagnoseError;
 use super::candidates::Candidate;
 use super::context::{Context, Evaluated};
-use super::fit::levenberg_marquardt;
+use super::fit::{levenberg_marquardt, parallel_map};
 use super::sensor;
 use super::surrogate::{ratios, scaled};
 use crate::synth::Effect;
@@ -90,32 +90,15 @@ impl Context<'_> {
         };
         // Values of one stage run side by side, one per thread: a screening often
         // simulates a single long record, which would leave the other threads idle.
-        let threads = self.options.threads.max(1);
-        let mut kept: Option<(f64, f64, Vec<f64>)> = None;
-        let mut tried: Vec<(f64, f64)> = Vec::new();
         type Kept = Option<(f64, f64, Vec<f64>)>;
+        let threads = self.options.threads;
+        let mut kept: Kept = None;
+        let mut tried: Vec<(f64, f64)> = Vec::new();
         let stage = |us: &[f64], kept: &mut Kept, tried: &mut Vec<(f64, f64)>| {
-            let results: Vec<(f64, Kept)> = us
-                .chunks(threads)
-                .flat_map(|chunk| {
-                    std::thread::scope(|scope| {
-                        let handles: Vec<_> = chunk
-                            .iter()
-                            .map(|u| {
-                                let u = u.clamp(lo, hi);
-                                (u, scope.spawn(move || cost_at(u)))
-                            })
-                            .collect();
-                        handles
-                            .into_iter()
-                            .map(|(u, h)| (u, h.join().ok().flatten()))
-                            .collect::<Vec<_>>()
-                    })
-                })
-                .collect();
-            for (u, r) in results {
-                let cost = r.as_ref().map_or(f64::INFINITY, |r| r.1);
-                tried.push((u, cost));
+            let us: Vec<f64> = us.iter().map(|u| u.clamp(lo, hi)).collect();
+            let results = parallel_map(us.len(), threads, &|k| cost_at(us[k]));
+            for (u, r) in us.into_iter().zip(results) {
+                tried.push((u, r.as_ref().map_or(f64::INFINITY, |r| r.1)));
                 if let Some(r) = r.filter(|r| kept.as_ref().is_none_or(|k| r.1 < k.1)) {
                     *kept = Some(r);
                 }
