@@ -239,6 +239,16 @@ fn response_group(c: &mut Criterion) {
             .expect("response")
         })
     });
+    g.bench_function("10dof_200x24_orders_only", |b| {
+        b.iter(|| {
+            torsim::response::forced_response_orders(
+                black_box(&s),
+                black_box(&excitation),
+                black_box(&sweep),
+            )
+            .expect("response")
+        })
+    });
     let m3 = three_dof();
     let s3 = system(&m3);
     let excitation3 = Excitation::new(&m3, &s3, 1.0, &[1.0]);

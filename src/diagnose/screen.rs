@@ -12,7 +12,7 @@ use super::drift::{DRIFT_CHI2, long_run_drift};
 use super::observe::Regime;
 use super::surrogate::{causal_system, run_speeds};
 use crate::physics::Excitation;
-use crate::response::forced_response;
+use crate::response::forced_response_orders;
 use crate::synth::Effect;
 
 /// A screened candidate must lower the plain fit's score on the fitted data by this
@@ -81,7 +81,7 @@ fn torque_reversal_runs(cx: &Context, e: &Evaluated, name: &str) -> Vec<bool> {
             };
             let mean = system.mean_torque_nm[k].unwrap_or(0.0).abs();
             let excitation = Excitation::new(&e.model, &system, run.load, &orders);
-            let Ok(response) = forced_response(&system, &excitation, &speeds) else {
+            let Ok(response) = forced_response_orders(&system, &excitation, &speeds) else {
                 return false;
             };
             let Some(j) = response.connections.iter().position(|c| *c == k) else {

@@ -12,7 +12,7 @@ use super::observe::{Observed, Regime};
 use super::surrogate::{causal_system, run_speeds};
 use crate::model::Model;
 use crate::physics::Excitation;
-use crate::response::forced_response;
+use crate::response::forced_response_orders;
 
 /// Most cycle speeds evaluated per record (quantiles of the measured ones).
 const MAX_SPEEDS: usize = 24;
@@ -58,7 +58,7 @@ pub fn spread_factors(model: &Model, observed: &Observed) -> Vec<f64> {
             if speeds.len() < 2 {
                 continue;
             }
-            let Ok(response) = forced_response(&system, &excitation, &speeds) else {
+            let Ok(response) = forced_response_orders(&system, &excitation, &speeds) else {
                 continue;
             };
             for (i, o) in observed.observations.iter().enumerate() {

@@ -14,7 +14,7 @@ use super::sensor::{self, TapeJoint};
 use super::spread::spread_factors;
 use crate::model::{ConnectionKind, Model};
 use crate::physics::{ElementLaw, Excitation, OperatingPoint, System};
-use crate::response::forced_response;
+use crate::response::forced_response_orders;
 use crate::synth::param_error::{parameter_names, scale_parameter};
 use crate::transient::maxwell::{MaxwellChain, excited_band_hz};
 
@@ -140,7 +140,7 @@ pub fn linear_predict(
         speeds.sort_by(f64::total_cmp);
         speeds.dedup();
         let excitation = Excitation::new(model, &system, run.load, &orders);
-        let response = forced_response(&system, &excitation, &speeds).ok()?;
+        let response = forced_response_orders(&system, &excitation, &speeds).ok()?;
         for i in mine {
             let o = &observed.observations[i];
             let node = system.node_names.iter().position(|n| *n == o.station)?;

@@ -46,6 +46,16 @@ pub(crate) fn finite(key: &str, x: f64) -> Check {
     }
 }
 
+/// Every value of the list at `key` finite; the first that is not is named `key[i]`.
+/// (The key of an element is built only then: models are validated in the diagnosis'
+/// inner loops, where formatting every element's key cost 5 % of the time.)
+pub(crate) fn all_finite(key: &str, values: &[f64]) -> Check {
+    match values.iter().position(|x| !x.is_finite()) {
+        Some(i) => finite(&format!("{key}[{i}]"), values[i]),
+        None => Ok(()),
+    }
+}
+
 /// `[min, max]` with `0 ≤ min < max`, finite.
 pub(crate) fn range(key: &str, [lo, hi]: [f64; 2]) -> Check {
     if lo.is_finite() && hi.is_finite() && 0.0 <= lo && lo < hi {
@@ -249,9 +259,7 @@ fn rubber(key: &str, r: &RubberStage) -> Check {
 }
 
 fn poly_shape(key: &str, p: &Poly) -> Check {
-    for (i, c) in p.coeffs.iter().enumerate() {
-        finite(&format!("{key}[{i}]"), *c)?;
-    }
+    all_finite(key, &p.coeffs)?;
     if let Some([lo, hi]) = p.range
         && !(lo.is_finite() && hi.is_finite() && lo < hi)
     {

@@ -1,7 +1,9 @@
 //! Semantic checks of the excitation (`[engine]`, `[[harmonic]]`), `[operation]` and
 //! `[expect]`; part of [`validate`](super::validate::validate).
 
-use super::validate::{Check, fail, finite, increasing, known_node, non_negative, positive, range};
+use super::validate::{
+    Check, all_finite, fail, finite, increasing, known_node, non_negative, positive, range,
+};
 use super::{Engine, HarmonicAmplitude, Model, Pressure, PressureCurve};
 
 /// `[engine]`.
@@ -46,9 +48,7 @@ pub(crate) fn engine(model: &Model, e: &Engine) -> Check {
                 ),
             )?;
         }
-        for (i, a) in angles.iter().enumerate() {
-            finite(&format!("engine.firing_angles_deg[{i}]"), *a)?;
-        }
+        all_finite("engine.firing_angles_deg", angles)?;
     }
     positive("engine.bore", e.bore_m)?;
     positive("engine.crank_radius", e.crank_radius_m)?;
@@ -131,12 +131,8 @@ fn curve(key: &str, c: &PressureCurve, cycle_deg: f64) -> Check {
             format!("needs at least 2 points, found {}", angles.len()),
         )?;
     }
-    for (i, a) in angles.iter().enumerate() {
-        finite(&format!("{angles_key}[{i}]"), *a)?;
-    }
-    for (i, p) in bar.iter().enumerate() {
-        finite(&format!("{bar_key}[{i}]"), *p)?;
-    }
+    all_finite(&angles_key, angles)?;
+    all_finite(&bar_key, bar)?;
     increasing(&angles_key, angles)?;
     let span = angles[angles.len() - 1] - angles[0];
     let closed = span == cycle_deg && bar[0] == bar[bar.len() - 1];
@@ -178,9 +174,7 @@ pub(crate) fn harmonics(model: &Model) -> Check {
                 if speed_rpm.is_empty() {
                     fail(key("amplitude.rpm"), "needs at least one point")?;
                 }
-                for (j, s) in speed_rpm.iter().enumerate() {
-                    finite(&format!("{}[{j}]", key("amplitude.rpm")), *s)?;
-                }
+                all_finite(&key("amplitude.rpm"), speed_rpm)?;
                 for (j, a) in amplitude_nm.iter().enumerate() {
                     non_negative(&format!("{}[{j}]", key("amplitude.nm")), *a)?;
                 }

@@ -6,7 +6,7 @@ pub mod peak;
 pub mod sweep;
 mod tree;
 
-pub use sweep::{Response, forced_response};
+pub use sweep::{Response, forced_response, forced_response_orders};
 
 #[cfg(test)]
 mod tests;

@@ -120,3 +120,38 @@ fn two_dof_torque_loss_and_ias_peak_match_the_closed_form() {
         assert!(got <= bound * (1.0 + 1e-12));
     }
 }
+
+/// The order-only sweep gives the per-order results of the full one to the bit, and
+/// leaves the synthesized peaks at zero.
+#[test]
+fn the_order_only_sweep_is_the_full_one_without_the_peaks() {
+    let model = parse_model(&model_text(), "two-dof.toml").unwrap();
+    let system = System::new(&model, OperatingPoint::default()).unwrap();
+    let orders: Vec<f64> = HARMONICS.iter().map(|h| h.0).collect();
+    let excitation = Excitation::new(&model, &system, 1.0, &orders);
+    let speeds: Vec<f64> = (1..=30).map(|i| 60.0 * i as f64).collect();
+    let full = forced_response(&system, &excitation, &speeds).unwrap();
+    let orders_only = super::forced_response_orders(&system, &excitation, &speeds).unwrap();
+    assert_eq!(orders_only.ias_amplitude_rpm, full.ias_amplitude_rpm);
+    assert_eq!(orders_only.torque_amplitude_nm, full.torque_amplitude_nm);
+    assert_eq!(
+        orders_only.power_loss_by_order_w,
+        full.power_loss_by_order_w
+    );
+    assert_eq!(orders_only.power_loss_w, full.power_loss_w);
+    assert!(full.ias_half_peak_to_peak_rpm[0].iter().all(|v| *v > 0.0));
+    assert!(
+        orders_only
+            .ias_half_peak_to_peak_rpm
+            .iter()
+            .flatten()
+            .all(|v| *v == 0.0)
+    );
+    assert!(
+        orders_only
+            .torque_peak_nm
+            .iter()
+            .flatten()
+            .all(|v| *v == 0.0)
+    );
+}

@@ -63,7 +63,11 @@ impl Plant {
                     power_w: 0.0,
                 }
             }
-            PlantLaw::Rubber(r) => rubber_state(r, self.own_twist(e, y), e.ratio, y, dy),
+            PlantLaw::Rubber(r) => {
+                let rate_own = e.ratio
+                    * (e.from_dof.map_or(0.0, |d| y[n + d]) - e.to_dof.map_or(0.0, |d| y[n + d]));
+                rubber_state(r, [self.own_twist(e, y), rate_own], e.ratio, y, dy)
+            }
         }
     }
 
@@ -207,11 +211,12 @@ fn small_sin_cos(x: f64) -> (f64, f64) {
 }
 
 /// Secant amplitude factor, temperature factors and the chain: the stage's torque (own
-/// shaft) is `c_Tstat·α_x(x)·α_Tc(T)·[k∞ φ + α_Tξ(T) Σ k_j (φ − q_j)]` (seed 000 eq. 1–2,
-/// 10–15 with the causal chain of [`super::maxwell`]).
+/// shaft) is `c_Tstat·α_x(x)·α_Tc(T)·[k∞ φ + α_Tξ(T) (Σ k_j (φ − q_j) + c_v φ̇)]` (seed
+/// 000 eq. 1–2, 10–15 with the causal chain of [`super::maxwell`]; `c_v` the dashpot of
+/// the arms taken out, [`RubberPlant::viscous_s`]). `[twist_own, rate_own]`: rad, rad/s.
 fn rubber_state(
     r: &RubberPlant,
-    twist_own: f64,
+    [twist_own, rate_own]: [f64; 2],
     ratio: f64,
     y: &[f64],
     dy: Option<&mut [f64]>,
@@ -244,6 +249,8 @@ fn rubber_state(
             d[r.arm_offset + j] = stretch / tau;
         }
     }
+    arms_torque += r.viscous_s * rate_own;
+    arms_power += r.viscous_s * rate_own * rate_own;
     let torque_own = scale * (r.chain.equilibrium * twist_own + alpha_txi * arms_torque);
     ElementState {
         torque_ref_nm: torque_own * ratio,

@@ -14,6 +14,7 @@ mod error;
 mod export;
 pub mod forces;
 pub mod maxwell;
+mod maxwell_cache;
 mod nnls;
 pub mod observe;
 pub mod plant;

@@ -31,6 +31,9 @@ pub struct RubberPlant {
     pub chain: MaxwellChain,
     /// Index of the first arm state in the state vector.
     pub arm_offset: usize,
+    /// The dashpot that stands in for the arms too fast to integrate
+    /// ([`MaxwellChain::take_fast_arms`]), relative stiffness × s (0: none).
+    pub viscous_s: f64,
     /// Index of this stage's temperature state, or the fixed temperature.
     pub temperature: Temperature,
 }
@@ -188,12 +191,14 @@ pub struct Plant {
 
 impl Plant {
     /// Builds the plant of `model` at engine `load` for speeds between `min_rpm` and
-    /// `max_rpm` (they set the band the rubber chains are fitted over).
+    /// `max_rpm` (they set the band the rubber chains are fitted over). Maxwell arms
+    /// relaxing faster than `viscous_above_hz` (if given) become a dashpot
+    /// ([`MaxwellChain::take_fast_arms`]).
     pub fn new(
         model: &Model,
         load: f64,
-        min_rpm: f64,
-        max_rpm: f64,
+        [min_rpm, max_rpm]: [f64; 2],
+        viscous_above_hz: Option<f64>,
     ) -> Result<Self, TransientError> {
         let system = System::new(
             model,
@@ -253,7 +258,8 @@ impl Plant {
                     ),
                 },
                 ConnectionKind::Rubber(stage) => {
-                    let chain = MaxwellChain::fit(stage, band);
+                    let mut chain = MaxwellChain::fit(stage, band);
+                    let viscous_s = viscous_above_hz.map_or(0.0, |f| chain.take_fast_arms(f));
                     let arm_offset = state_len;
                     state_len += chain.arms.len();
                     let temperature = match &stage.thermal {
@@ -278,6 +284,7 @@ impl Plant {
                             temperature_damping_poly: stage.temperature_damping_poly.clone(),
                             chain,
                             arm_offset,
+                            viscous_s,
                             temperature,
                         })),
                     )

@@ -53,6 +53,14 @@ pub struct RunOptions {
     pub max_settle_s: f64,
     /// Integrator (default: explicit unless the model is stiff).
     pub method: Method,
+    /// Steps per working cycle at the run's highest speed that the integrator must take
+    /// at least (default 180: 4° of crank on a four-stroke engine).
+    pub min_steps_per_cycle: f64,
+    /// Rubber Maxwell arms that relax faster than this, Hz, run as their low-frequency
+    /// limit, a dashpot ([`super::maxwell::MaxwellChain::take_fast_arms`]; default `None`:
+    /// every arm is integrated). For runs of which only frequencies below a third of it
+    /// matter: the fastest arms bound the explicit integrator's step.
+    pub viscous_above_hz: Option<f64>,
 }
 
 impl Default for RunOptions {
@@ -64,6 +72,8 @@ impl Default for RunOptions {
             settle_tolerance: 1e-4,
             max_settle_s: 60.0,
             method: Method::Auto,
+            min_steps_per_cycle: 180.0,
+            viscous_above_hz: None,
         }
     }
 }
@@ -103,7 +113,8 @@ pub struct Simulation {
     pub temperature_c: Vec<(usize, Vec<f64>)>,
     /// Connection names, model order.
     pub connection_names: Vec<String>,
-    /// Fitted Maxwell chain of each rubber stage: `(connection, chain)`.
+    /// Fitted Maxwell chain of each rubber stage: `(connection, chain)` (without the arms
+    /// run as a dashpot, [`RunOptions::viscous_above_hz`]).
     pub chains: Vec<(usize, MaxwellChain)>,
     /// Settling before the recording.
     pub settling: Settling,
@@ -150,6 +161,8 @@ pub fn simulate_observed(
         ("speed", to_rpm),
         ("rate", options.rate_hz),
         ("duration", duration_s),
+        ("steps per cycle", options.min_steps_per_cycle),
+        ("viscous limit", options.viscous_above_hz.unwrap_or(1.0)),
     ] {
         if !(v.is_finite() && v > 0.0) {
             return Err(TransientError::Model(format!(
@@ -160,8 +173,8 @@ pub fn simulate_observed(
     let plant = Plant::new(
         model,
         options.load,
-        from_rpm.min(to_rpm),
-        from_rpm.max(to_rpm),
+        [from_rpm.min(to_rpm), from_rpm.max(to_rpm)],
+        options.viscous_above_hz,
     )?;
     let cycle_rad = plant.engine.as_ref().map_or(2.0 * TAU, |e| e.cycle_rad);
     let mut profile = SpeedProfile::steady(from_rpm);
@@ -169,7 +182,7 @@ pub fn simulate_observed(
     let y0 = initial_state(&plant)?;
     let atol = tolerances(&plant);
     let cycle_s = |rpm: f64| cycle_rad / (rpm * TAU / 60.0);
-    let h_max = cycle_s(from_rpm.max(to_rpm)) / 180.0;
+    let h_max = cycle_s(from_rpm.max(to_rpm)) / options.min_steps_per_cycle.max(1.0);
     let mut solver = {
         let mut rhs =
             |t: f64, y: &[f64], dy: &mut [f64]| plant.derivatives(t, y, dy, &profile, &mut mass);

@@ -1,0 +1,100 @@
+//! Maxwell chain fits, remembered. A fit is a non-negative least-squares problem of some
+//! 90 rows; a diagnosis asks for the same few chains thousands of times (every run of
+//! every time-domain evaluation, every linear surrogate), and they took a tenth of its
+//! time. A chain depends only on the stage's ψ and frequency law and on the band, so
+//! those, bit for bit, are the key: a remembered chain is the very chain a new fit gives.
+
+use super::maxwell::MaxwellChain;
+use crate::model::RubberStage;
+use std::collections::HashMap;
+use std::sync::{Mutex, OnceLock};
+
+/// Chains kept at most; the memory is emptied when it is full (a chain is ~1 kB).
+const CAPACITY: usize = 4096;
+
+/// What a fit depends on: ψ, the frequency law (coefficients and range) and the band.
+type Key = Vec<u64>;
+
+fn key(stage: &RubberStage, band_hz: [f64; 2]) -> Key {
+    let mut key = vec![
+        stage.psi.to_bits(),
+        band_hz[0].to_bits(),
+        band_hz[1].to_bits(),
+    ];
+    if let Some(p) = &stage.frequency_poly {
+        key.extend(p.coeffs.iter().map(|c| c.to_bits()));
+        if let Some(range) = p.range {
+            key.extend(range.iter().map(|r| r.to_bits()));
+        }
+    }
+    key
+}
+
+fn memory() -> &'static Mutex<HashMap<Key, MaxwellChain>> {
+    static MEMORY: OnceLock<Mutex<HashMap<Key, MaxwellChain>>> = OnceLock::new();
+    MEMORY.get_or_init(|| Mutex::new(HashMap::new()))
+}
+
+impl MaxwellChain {
+    /// Fits the chain to `stage`'s α_f and ψ over `band_hz = [lo, hi]` (lo > 0), or gives
+    /// back the chain fitted before to the same ψ, law and band.
+    pub fn fit(stage: &RubberStage, band_hz: [f64; 2]) -> Self {
+        let key = key(stage, band_hz);
+        // A poisoned lock only means another thread panicked while holding it; the map
+        // itself is always whole.
+        let lookup = |map: &HashMap<Key, MaxwellChain>| map.get(&key).cloned();
+        if let Some(chain) = lookup(&memory().lock().unwrap_or_else(|e| e.into_inner())) {
+            return chain;
+        }
+        let chain = Self::fit_uncached(stage, band_hz);
+        let mut map = memory().lock().unwrap_or_else(|e| e.into_inner());
+        if map.len() >= CAPACITY {
+            map.clear();
+        }
+        map.insert(key, chain.clone());
+        chain
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::{Poly, RubberStiffness};
+
+    fn stage(psi: f64, a2: f64) -> RubberStage {
+        RubberStage {
+            stiffness: RubberStiffness::Direct(1.0e4),
+            psi,
+            temperature_c: 25.0,
+            amplitude_poly: None,
+            frequency_poly: Some(Poly {
+                coeffs: [a2, 0.0, 1.0],
+                range: None,
+            }),
+            temperature_stiffness_poly: None,
+            temperature_damping_poly: None,
+            thermal: None,
+        }
+    }
+
+    #[test]
+    fn a_remembered_chain_is_the_fitted_one() {
+        let band = [2.0, 3600.0];
+        for (psi, a2) in [(1.0, 1e-7), (0.9, 1e-7), (1.0, 2e-7)] {
+            let s = stage(psi, a2);
+            let fresh = MaxwellChain::fit_uncached(&s, band);
+            assert_eq!(MaxwellChain::fit(&s, band), fresh);
+            assert_eq!(MaxwellChain::fit(&s, band), fresh);
+        }
+        // Another band is another chain.
+        let s = stage(1.0, 1e-7);
+        assert_eq!(
+            MaxwellChain::fit(&s, [2.0, 1800.0]),
+            MaxwellChain::fit_uncached(&s, [2.0, 1800.0])
+        );
+        assert_ne!(
+            MaxwellChain::fit(&s, [2.0, 1800.0]),
+            MaxwellChain::fit(&s, band)
+        );
+    }
+}
