@@ -59,6 +59,15 @@ fn exact_angles(omega: f64, torque: Complex64) -> (Complex64, Complex64) {
     (torque * d22 / det, torque * k_star / det)
 }
 
+/// The two-DOF model's system and its excitation at [`HARMONICS`].
+fn two_dof() -> (System, Excitation) {
+    let model = parse_model(&model_text(), "two-dof.toml").unwrap();
+    let system = System::new(&model, OperatingPoint::default()).unwrap();
+    let orders: Vec<f64> = HARMONICS.iter().map(|h| h.0).collect();
+    let excitation = Excitation::new(&model, &system, 1.0, &orders);
+    (system, excitation)
+}
+
 /// Per order: the rubber's torque `|k*(Θ_a − Θ_b)|` and DIN 740 loss `ψ·½k|Δθ|²·f`, the
 /// shaft's `|(k_s + iωc_s)Θ_b|` and viscous loss `½c_sω²|Θ_b|²`; the per-order losses add
 /// up to the total. Tolerance 1e-11: one 2×2 complex LU solve against Cramer's rule.
@@ -67,10 +76,7 @@ fn exact_angles(omega: f64, torque: Complex64) -> (Complex64, Complex64) {
 /// amplitude sum, the parabola refinement's bound at 16 samples per period.
 #[test]
 fn two_dof_torque_loss_and_ias_peak_match_the_closed_form() {
-    let model = parse_model(&model_text(), "two-dof.toml").unwrap();
-    let system = System::new(&model, OperatingPoint::default()).unwrap();
-    let orders: Vec<f64> = HARMONICS.iter().map(|h| h.0).collect();
-    let excitation = Excitation::new(&model, &system, 1.0, &orders);
+    let (system, excitation) = two_dof();
     let speeds: Vec<f64> = (1..=90).map(|i| 20.0 * i as f64).collect();
     let r = forced_response(&system, &excitation, &speeds).unwrap();
     let rubber = r.connections.iter().position(|&c| c == 0).unwrap();
@@ -125,10 +131,7 @@ fn two_dof_torque_loss_and_ias_peak_match_the_closed_form() {
 /// leaves the synthesized peaks at zero.
 #[test]
 fn the_order_only_sweep_is_the_full_one_without_the_peaks() {
-    let model = parse_model(&model_text(), "two-dof.toml").unwrap();
-    let system = System::new(&model, OperatingPoint::default()).unwrap();
-    let orders: Vec<f64> = HARMONICS.iter().map(|h| h.0).collect();
-    let excitation = Excitation::new(&model, &system, 1.0, &orders);
+    let (system, excitation) = two_dof();
     let speeds: Vec<f64> = (1..=30).map(|i| 60.0 * i as f64).collect();
     let full = forced_response(&system, &excitation, &speeds).unwrap();
     let orders_only = super::forced_response_orders(&system, &excitation, &speeds).unwrap();
