@@ -80,13 +80,14 @@ const MIN_STEPS_PER_CYCLE: f64 = 90.0;
 /// the diagnosis bench: 329 000 steps instead of 678 000).
 const VISCOUS_ABOVE: f64 = 3.0;
 
-/// The time domain's settings for a run of the diagnosis at `load`, output at
-/// [`OVERSAMPLING`] times the recording's `rate_hz`; `compared_hz`: the highest
-/// frequency its observations compare (the highest order at the highest speed).
-pub(super) fn run_options(load: f64, rate_hz: f64, compared_hz: f64) -> RunOptions {
+/// The time domain's settings for simulating `run` (or a part of it whose highest speed
+/// is `top_speed_rpm`) to compare orders up to `max_order`: its load, output at
+/// [`OVERSAMPLING`] times the recording's rate.
+pub(super) fn run_options(run: &Run, max_order: f64, top_speed_rpm: f64) -> RunOptions {
+    let compared_hz = max_order * top_speed_rpm / 60.0;
     RunOptions {
-        load,
-        rate_hz: OVERSAMPLING * rate_hz,
+        load: run.load,
+        rate_hz: OVERSAMPLING * run.rate_hz,
         settle_tolerance: SETTLE_TOLERANCE,
         max_settle_s: MAX_SETTLE_S,
         rtol: RTOL,
@@ -150,7 +151,7 @@ fn predict_run(
         speed_rpm,
         duration_s,
     };
-    let options = run_options(run.load, run.rate_hz, max_order * speed_rpm / 60.0);
+    let options = run_options(run, max_order, speed_rpm);
     let sim = simulate(model, kind, options, &mut |_| true).map_err(|e| e.to_string())?;
     let rec = station_recording(&sim, run, RecKind::Steady)?;
     let analysis_opts = analysis_options(max_order);

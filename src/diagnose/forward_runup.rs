@@ -95,8 +95,7 @@ pub fn predict_segment(
         to_rpm: from_rpm + slope * seg.to_s,
         duration_s: seg.to_s - start,
     };
-    let compared_hz = max_order * from_rpm.max(to_rpm) / 60.0;
-    let options = super::forward::run_options(run.load, run.rate_hz, compared_hz);
+    let options = super::forward::run_options(run, max_order, from_rpm.max(to_rpm));
     let sim = simulate(model, kind, options, &mut |_| true).map_err(|e| e.to_string())?;
     let rec = super::forward::station_recording(&sim, run, RecKind::RunUp)?;
     let mut rec = slice(&rec, lead, lead + seg.to_s - seg.from_s);

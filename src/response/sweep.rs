@@ -150,8 +150,10 @@ fn sweep(
                 response.ias_amplitude_rpm[node][q][s] =
                     ratio.abs() * omega * angle[dof].norm_sqr().sqrt() * RPM_PER_RAD_S;
             }
-            for (v, a) in velocities.iter_mut().zip(&angle) {
-                v[q] = Complex64::new(0.0, omega * RPM_PER_RAD_S) * a;
+            if synthesize {
+                for (v, a) in velocities.iter_mut().zip(&angle) {
+                    v[q] = Complex64::new(0.0, omega * RPM_PER_RAD_S) * a;
+                }
             }
             for (c, e) in system.elements.iter().enumerate() {
                 let (k, loss) = stiffness[c];

@@ -20,10 +20,12 @@ pub struct ElementState {
 }
 
 impl Plant {
-    /// The twist of an element in its own shaft, rad: `ratio·(θ_from − θ_to)`.
-    fn own_twist(&self, e: &PlantElement, y: &[f64]) -> f64 {
-        let a = e.from_dof.map_or(0.0, |d| y[d]);
-        let b = e.to_dof.map_or(0.0, |d| y[d]);
+    /// `ratio·(x_from − x_to)` of a per-DOF quantity `x`, in the element's own shaft: its
+    /// twist, rad, from the angles `y`, and the twist's rate, rad/s, from the speeds
+    /// `&y[n_dof..]`.
+    fn own_relative(e: &PlantElement, x: &[f64]) -> f64 {
+        let a = e.from_dof.map_or(0.0, |d| x[d]);
+        let b = e.to_dof.map_or(0.0, |d| x[d]);
         e.ratio * (a - b)
     }
 
@@ -50,7 +52,7 @@ impl Plant {
                 stiffness_own,
                 half_gap_rad,
             } => {
-                let d = self.own_twist(e, y);
+                let d = Self::own_relative(e, y);
                 let contact = if d > *half_gap_rad {
                     d - half_gap_rad
                 } else if d < -half_gap_rad {
@@ -64,9 +66,8 @@ impl Plant {
                 }
             }
             PlantLaw::Rubber(r) => {
-                let rate_own = e.ratio
-                    * (e.from_dof.map_or(0.0, |d| y[n + d]) - e.to_dof.map_or(0.0, |d| y[n + d]));
-                rubber_state(r, [self.own_twist(e, y), rate_own], e.ratio, y, dy)
+                let own = [Self::own_relative(e, y), Self::own_relative(e, &y[n..])];
+                rubber_state(r, own, e.ratio, y, dy)
             }
         }
     }

@@ -7,7 +7,7 @@
 use super::maxwell::MaxwellChain;
 use crate::model::RubberStage;
 use std::collections::HashMap;
-use std::sync::{Mutex, OnceLock};
+use std::sync::{Mutex, MutexGuard, OnceLock, PoisonError};
 
 /// Chains kept at most; the memory is emptied when it is full (a chain is ~1 kB).
 const CAPACITY: usize = 4096;
@@ -30,9 +30,14 @@ fn key(stage: &RubberStage, band_hz: [f64; 2]) -> Key {
     key
 }
 
-fn memory() -> &'static Mutex<HashMap<Key, MaxwellChain>> {
+/// The remembered chains, locked. A poisoned lock only means another thread panicked
+/// while holding it; the map itself is always whole.
+fn memory() -> MutexGuard<'static, HashMap<Key, MaxwellChain>> {
     static MEMORY: OnceLock<Mutex<HashMap<Key, MaxwellChain>>> = OnceLock::new();
-    MEMORY.get_or_init(|| Mutex::new(HashMap::new()))
+    MEMORY
+        .get_or_init(|| Mutex::new(HashMap::new()))
+        .lock()
+        .unwrap_or_else(PoisonError::into_inner)
 }
 
 impl MaxwellChain {
@@ -40,14 +45,13 @@ impl MaxwellChain {
     /// back the chain fitted before to the same ψ, law and band.
     pub fn fit(stage: &RubberStage, band_hz: [f64; 2]) -> Self {
         let key = key(stage, band_hz);
-        // A poisoned lock only means another thread panicked while holding it; the map
-        // itself is always whole.
-        let lookup = |map: &HashMap<Key, MaxwellChain>| map.get(&key).cloned();
-        if let Some(chain) = lookup(&memory().lock().unwrap_or_else(|e| e.into_inner())) {
+        let remembered = memory().get(&key).cloned();
+        if let Some(chain) = remembered {
             return chain;
         }
+        // Fitted outside the lock, so other threads' look-ups do not wait for it.
         let chain = Self::fit_uncached(stage, band_hz);
-        let mut map = memory().lock().unwrap_or_else(|e| e.into_inner());
+        let mut map = memory();
         if map.len() >= CAPACITY {
             map.clear();
         }
