@@ -61,6 +61,7 @@ pub mod check;
 pub mod compare;
 pub mod diagnose;
 pub mod files;
+pub mod limits;
 pub mod modal;
 pub mod model;
 pub mod physics;
