@@ -39,11 +39,23 @@ pub struct DiagnoseArgs {
     pub max_order: Option<f64>,
 }
 
-/// Bad input is exit 2; a diagnosis that could not run is exit 1.
-fn cli_error(e: DiagnoseError) -> CliError {
-    match e {
-        DiagnoseError::Input(_) | DiagnoseError::Analysis { .. } => CliError::input(e),
-        DiagnoseError::Simulation { .. } | DiagnoseError::Cancelled => CliError::failed(e),
+/// Bad input is exit 2; a diagnosis that could not run is exit 1. The library names a
+/// recording by its label; every label it quotes is followed by the file it came from
+/// (`files`: label and path of each recording), so the message locates its cause.
+fn cli_error(e: DiagnoseError, files: &[(String, String)]) -> CliError {
+    let code_input = matches!(e, DiagnoseError::Input(_) | DiagnoseError::Analysis { .. });
+    let mut text = e.to_string();
+    for (label, path) in files {
+        let quoted = format!("`{label}`");
+        if text.contains(&quoted) && !text.contains(path.as_str()) {
+            text = text.replacen(&quoted, &format!("{quoted} ({path})"), 1);
+        }
+    }
+    let error = anyhow::anyhow!(text);
+    if code_input {
+        CliError::input(error)
+    } else {
+        CliError::failed(error)
     }
 }
 
@@ -123,7 +135,12 @@ pub fn run(a: &DiagnoseArgs) -> Result<(), CliError> {
         progress.set(fraction)
     });
     progress.finish();
-    let report = result.map_err(cli_error)?;
+    let files: Vec<(String, String)> = recordings
+        .iter()
+        .zip(&a.recordings)
+        .map(|(r, path)| (r.label.clone(), path.clone()))
+        .collect();
+    let report = result.map_err(|e| cli_error(e, &files))?;
     if let Some(path) = &a.report {
         write_atomic(Path::new(path), &report_html(&report, &model.name))?;
     }

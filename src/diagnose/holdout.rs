@@ -7,6 +7,7 @@
 //!   predicted forward in time, not interpolated).
 //! - A run-up: its speed bins alternate, so a resonance is in both halves.
 
+use super::DiagnoseError;
 use super::observe::{LONG_RUN_BLOCKS, Observed, Regime};
 
 /// `true` for the held-out observations.
@@ -42,6 +43,29 @@ pub fn held_out(observed: &Observed) -> Vec<bool> {
             Regime::RunUp { .. } => o.part % 2 == 1,
         })
         .collect()
+}
+
+/// Refuses a campaign that leaves nothing to fit or nothing held out: the held-out χ²/N
+/// that judges every verdict (`spec/diagnosis.md`) would be 0/0 (issue 13: one recording
+/// gave "held-out χ²/N from NaN to NaN" with exit 0).
+pub fn check_split(observed: &Observed, mask: &[bool]) -> Result<(), DiagnoseError> {
+    let held = mask.iter().filter(|m| **m).count();
+    if held > 0 && held < mask.len() {
+        return Ok(());
+    }
+    let runs: Vec<String> = observed
+        .runs
+        .iter()
+        .map(|r| format!("`{}`", r.label))
+        .collect();
+    let missing = if held == 0 { "held out" } else { "fitted" };
+    Err(DiagnoseError::Input(format!(
+        "the recordings ({}) give {} compared amplitudes and none to be {missing}: a diagnosis \
+         fits on some and judges on others, so give at least two steady runs at one load, \
+         a long run or a run-up",
+        runs.join(", "),
+        mask.len()
+    )))
 }
 
 /// The labels of what is held out: `"Regime B"`, `"Regime C, long run (second half)"`,

@@ -45,6 +45,7 @@ pub fn diagnose(
     step(0.0, "analysing the recordings")?;
     let observed = observe(recordings, options.max_order)?;
     let held_out = holdout::held_out(&observed);
+    holdout::check_split(&observed, &held_out)?;
     let cx = Context {
         held_out,
         user: model,

@@ -152,3 +152,24 @@ fn run_up_window_noise_comes_from_the_bin_scatter() {
     );
     assert_eq!(scatter[1], 0.0);
 }
+
+/// One steady recording leaves nothing held out: refused with the recording named, never
+/// "held-out χ²/N from NaN to NaN" (issue 13).
+#[test]
+fn one_steady_recording_is_refused_not_nan() {
+    let recs = vec![steady("Regime A", 3000.0, 5.0, 2.0, 0.3, 1)];
+    let observed = observe(&recs, 8.0).unwrap();
+    let mask = held_out(&observed);
+    let e = super::holdout::check_split(&observed, &mask).unwrap_err();
+    let text = e.to_string();
+    assert!(
+        text.contains("`Regime A`") && text.contains("none to be held out"),
+        "{text}"
+    );
+    let two = vec![
+        steady("A", 3000.0, 5.0, 2.0, 0.3, 1),
+        steady("B", 3500.0, 5.0, 2.0, 0.3, 2),
+    ];
+    let observed = observe(&two, 8.0).unwrap();
+    assert!(super::holdout::check_split(&observed, &held_out(&observed)).is_ok());
+}
