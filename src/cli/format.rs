@@ -21,6 +21,7 @@ pub fn emit(text: &str) -> Result<(), CliError> {
 
 /// Prints one JSON document on stdout; refuses non-finite numbers (JSON has none).
 pub fn print_json(value: &Value) -> Result<(), CliError> {
+    super::json_guard::check(value).map_err(|e| CliError::failed(anyhow::anyhow!(e)))?;
     let text = serde_json::to_string_pretty(value).map_err(CliError::failed)?;
     emit(&(text + "\n"))
 }

@@ -10,6 +10,7 @@ mod diagnose;
 pub mod error;
 mod format;
 mod input;
+mod json_guard;
 pub use input::load_model;
 mod modes;
 mod progress;

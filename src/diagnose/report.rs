@@ -128,6 +128,7 @@ pub struct Resonance {
     /// The model's amplitude there, rpm.
     pub simulated: f64,
     /// The nearest natural frequency of the model, Hz (none for a model without modes).
+    #[serde(skip_serializing_if = "Option::is_none")]
     pub nearest_mode_hz: Option<f64>,
 }
 
