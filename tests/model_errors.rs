@@ -376,3 +376,15 @@ fn model_files_not_utf8_name_line_and_offset_and_bom_crlf_are_accepted() {
     assert_eq!(model.inertias.len(), 2);
     std::fs::remove_dir_all(&dir).ok();
 }
+
+#[test]
+fn rubber_temperatures_outside_the_law_are_refused() {
+    let t = with(&format!("{RUBBER}temperature_c = -300.0\n"));
+    fails(&t, "connection[1].temperature_c", "temperature_c", "-300 °C is outside");
+    assert!(error(&t).message.contains("-100 … 300 °C"));
+    let t = with(&format!(
+        "{RUBBER}thermal = {{ capacity_j_per_k = 1, conductance_w_per_k = 1, ambient_c = 400 }}\n"
+    ));
+    fails(&t, "connection[1].thermal.ambient_c", "thermal", "400 °C is outside");
+    parse_model(&with(&format!("{RUBBER}temperature_c = -40.0\n")), "t").expect("−40 °C");
+}

@@ -221,7 +221,7 @@ fn rubber(key: &str, r: &RubberStage) -> Check {
         }
     }
     positive(&k("psi"), r.psi)?;
-    finite(&k("temperature_c"), r.temperature_c)?;
+    temperature(&k("temperature_c"), r.temperature_c)?;
     if r.amplitude_poly.is_some() && matches!(r.stiffness, RubberStiffness::Direct(_)) {
         fail(
             k("amplitude_poly"),
@@ -242,7 +242,7 @@ fn rubber(key: &str, r: &RubberStage) -> Check {
     if let Some(t) = &r.thermal {
         positive(&k("thermal.capacity_j_per_k"), t.capacity_j_per_k)?;
         positive(&k("thermal.conductance_w_per_k"), t.conductance_w_per_k)?;
-        finite(&k("thermal.ambient_c"), t.ambient_c)?;
+        temperature(&k("thermal.ambient_c"), t.ambient_c)?;
     }
     let temperatures = std::iter::once(("temperature_c", r.temperature_c)).chain(
         r.thermal
@@ -262,6 +262,14 @@ fn rubber(key: &str, r: &RubberStage) -> Check {
         }
     }
     Ok(())
+}
+
+/// A rubber temperature within [`super::rubber::TEMPERATURE_RANGE_C`] (issue 13).
+fn temperature(key: &str, temperature_c: f64) -> Check {
+    match super::rubber::temperature_problem(temperature_c) {
+        None => Ok(()),
+        Some(problem) => fail(key, problem),
+    }
 }
 
 fn poly_shape(key: &str, p: &Poly) -> Check {
