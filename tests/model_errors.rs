@@ -270,3 +270,121 @@ fn values_that_must_not_be_negative() {
     );
     fails(&t, "connection[0].backlash_deg", "backlash_deg", "≥ 0");
 }
+
+// ---- issue 13: names, limits, required keys, located messages ----
+
+#[test]
+fn node_and_connection_names_every_format_can_carry() {
+    let node = |name: &str| {
+        let t = replaced(BASE, "name = \"b\"", &format!("name = {name}"));
+        replaced(&t, "to = \"b\"", &format!("to = {name}"))
+    };
+    for (toml_name, says) in [
+        (r#""b,c""#, "contains a comma"),
+        (r#""b\nc""#, "U+000A"),
+        (r#""b\u0007""#, "U+0007"),
+        (r#""   ""#, "has only spaces"),
+        (r#"" b""#, "starts or ends with a space"),
+        (r#""b ""#, "starts or ends with a space"),
+        (r#""b\"c""#, "double quote"),
+        (r#""b\uFEFF""#, "U+FEFF"),
+    ] {
+        let t = node(toml_name);
+        fails_at(&t, "inertia[1].name", 9, says);
+        assert!(error(&t).message.contains("every output format"), "{t}");
+    }
+    let t = replaced(BASE, "name = \"b\"", "name = \"\"");
+    fails_at(&t, "inertia[1].name", 9, "is empty");
+    // Interior spaces and other printable Unicode read back from a CSV header.
+    parse_model(&node("\"Kurbel welle Ü\""), "t").expect("printable name");
+    let t = replaced(BASE, "kind = \"shaft\"", "kind = \"shaft\"\nname = \"s,1\"");
+    fails(&t, "connection[0].name", "s,1", "connection name \"s,1\" contains a comma");
+}
+
+#[test]
+fn cylinders_above_the_limit_are_refused() {
+    let t = with(&replaced(ENGINE, "cylinders = 2", "cylinders = 65"));
+    fails(&t, "engine.cylinders", "cylinders", "limit of 64");
+    assert!(error(&t).message.contains("--max-cylinders"));
+    let at = (0..64).map(|_| "\"a\"").collect::<Vec<_>>().join(", ");
+    let t = with(&replaced(
+        ENGINE,
+        "cylinders = 2",
+        &format!("cylinders = 64\nfiring_angles_deg = [{}]", at.replace("\"a\"", "0")),
+    ));
+    parse_model(&t, "t").expect("64 cylinders is within the limit");
+}
+
+#[test]
+fn operation_orders_empty_or_out_of_range_are_refused() {
+    let t = with("\n[operation]\norders = []\n");
+    fails(&t, "operation.orders", "orders", "is empty");
+    let t = with("\n[operation]\norders = [1, 100.5]\n");
+    fails(&t, "operation.orders[1]", "orders", "above the limit max_order = 100");
+    let t = with("\n[operation]\norders = [0.5, 100]\n");
+    parse_model(&t, "t").expect("order 100 is within the limit");
+    let t = with("\n[[harmonic]]\nat = \"a\"\norder = 1e9\namplitude = 1\nphase_deg = 0\n");
+    fails(&t, "harmonic[0].order", "order", "max_order");
+}
+
+#[test]
+fn harmonic_phase_is_required() {
+    let t = with("\n[[harmonic]]\nat = \"a\"\norder = 1\namplitude = 5\n");
+    fails(
+        &t,
+        "harmonic[0].phase_deg",
+        "[[harmonic]]",
+        "missing required key `phase_deg`",
+    );
+}
+
+#[test]
+fn duplicate_key_is_named() {
+    let text = replaced(BASE, "inertia = 2.0", "inertia = 2.0\ninertia = 3.0");
+    let e = error(&text);
+    assert!(e.message.contains("duplicate key `inertia`"), "{e}");
+}
+
+#[test]
+fn a_model_without_nodes_names_the_file() {
+    let e = error("format = 1\nname = \"t\"\n");
+    assert_eq!(e.key, "inertia", "{e}");
+    assert!(
+        e.to_string()
+            .starts_with("test.toml: key `inertia`: the model has no `[[inertia]]` nodes"),
+        "{e}"
+    );
+}
+
+#[test]
+fn model_files_not_utf8_name_line_and_offset_and_bom_crlf_are_accepted() {
+    let dir = std::env::temp_dir().join(format!("torsim-model-utf8-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let bad = dir.join("latin1.toml");
+    let mut bytes = BASE.replace("name = \"b\"", "name = \"b\u{e9}\"").into_bytes();
+    let at = bytes.iter().position(|&b| b == 0xC3).unwrap();
+    bytes.splice(at..at + 2, [0xE9]);
+    std::fs::write(&bad, &bytes).unwrap();
+    let e = torsim::model::read_model_file(&bad).unwrap_err();
+    assert_eq!(e.line, Some(9), "{e}");
+    assert!(e.message.contains(&format!("byte offset {at}")), "{e}");
+    assert!(e.message.contains("not valid UTF-8"), "{e}");
+    let bom = dir.join("bom.toml");
+    let crlf = format!("\u{FEFF}{}", BASE.replace('\n', "\r\n"));
+    std::fs::write(&bom, crlf).unwrap();
+    let model = torsim::model::read_model_file(&bom).expect("BOM and CRLF");
+    assert_eq!(model.inertias.len(), 2);
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn rubber_temperatures_outside_the_law_are_refused() {
+    let t = with(&format!("{RUBBER}temperature_c = -300.0\n"));
+    fails(&t, "connection[1].temperature_c", "temperature_c", "-300 °C is outside");
+    assert!(error(&t).message.contains("-100 … 300 °C"));
+    let t = with(&format!(
+        "{RUBBER}thermal = {{ capacity_j_per_k = 1, conductance_w_per_k = 1, ambient_c = 400 }}\n"
+    ));
+    fails(&t, "connection[1].thermal.ambient_c", "thermal", "400 °C is outside");
+    parse_model(&with(&format!("{RUBBER}temperature_c = -40.0\n")), "t").expect("−40 °C");
+}

@@ -85,7 +85,7 @@ fn unknown_nodes_in_engine_harmonic_and_load() {
     fails(&t, "engine.at", "\"zz\"", "unknown node `zz`");
     let t = with(&replaced(ENGINE, "at = \"a\"", "at = [\"a\",\n  \"zz\"]"));
     fails(&t, "engine.at[1]", "\"zz\"", "unknown node `zz`");
-    let t = with("\n[[harmonic]]\nat = \"q\"\norder = 1\namplitude = 5\n");
+    let t = with("\n[[harmonic]]\nat = \"q\"\norder = 1\namplitude = 5\nphase_deg = 0\n");
     fails(&t, "harmonic[0].at", "\"q\"", "unknown node `q`");
     let t = with("\n[load]\nat = \"w\"\n");
     fails(&t, "load.at", "\"w\"", "unknown node `w`");
@@ -305,7 +305,7 @@ fn rubber_polynomial_checks() {
 
 #[test]
 fn harmonic_checks() {
-    let h = |body: &str| with(&format!("\n[[harmonic]]\nat = \"a\"\n{body}\n"));
+    let h = |body: &str| with(&format!("\n[[harmonic]]\nat = \"a\"\nphase_deg = 0\n{body}\n"));
     fails(
         &h("order = 0\namplitude = 5"),
         "harmonic[0].order",

@@ -118,6 +118,7 @@ psi = 1.0
 at = "crank"
 order = 1.0
 amplitude = 150.0
+phase_deg = 0.0
 [[harmonic]]
 at = "brake"
 order = 1.0
@@ -161,6 +162,7 @@ psi = 1.0
 at = "crank"
 order = 1.0
 amplitude = 150.0
+phase_deg = 0.0
 [[harmonic]]
 at = "brake"
 order = 1.0
@@ -242,6 +244,7 @@ stiffness = 1.0e4
 at = "a"
 order = 1.0
 amplitude = { rpm = [1000.0, 2000.0], nm = [10.0, 30.0] }
+phase_deg = 0.0
 "#;
     let model = parse_model(text, "tabled.toml").unwrap();
     let system = System::new(&model, OperatingPoint::default()).unwrap();
@@ -279,6 +282,7 @@ frequency_poly = [-0.000023, 0.01519, 1.0]
 at = "a"
 order = 24.0
 amplitude = 10.0
+phase_deg = 0.0
 "#;
     let model = parse_model(text, "alpha.toml").unwrap();
     let system = System::new(&model, OperatingPoint::default()).unwrap();

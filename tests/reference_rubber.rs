@@ -113,3 +113,76 @@ fn static_twist_and_tangent_stiffness_under_mean_torque() {
         "the twist stiffens the stage noticeably"
     );
 }
+
+/// A 1-DOF rubber stage whose α_f = 1 − 0.02·f falls to 0 at 50 Hz (issue 13: `coupling`
+/// printed a negative stiffness, `simulate` fitted a chain with a 3974 % error).
+const FALLING_ALPHA_F: &str = r#"format = 1
+name = "falling alpha_f"
+[[inertia]]
+name = "a"
+inertia = 0.1
+[[connection]]
+kind = "rubber"
+name = "r"
+from = "a"
+to = "ground"
+stiffness = 1.0e4
+psi = 1.0
+frequency_poly = [0.0, -0.02, 1.0]
+[[harmonic]]
+at = "a"
+order = 1.0
+amplitude = 20.0
+phase_deg = 0.0
+"#;
+
+#[test]
+fn frequency_factor_at_or_below_zero_is_found_and_refused() {
+    use torsim::model::Poly;
+    use torsim::model::rubber::Factor;
+    use torsim::physics::PhysicsError;
+    use torsim::transient::{RunKind, RunOptions, TransientError, simulate};
+    let model = torsim::model::parse_model(FALLING_ALPHA_F, "f.toml").expect("valid model");
+    let ConnectionKind::Rubber(stage) = &model.connections[0].kind else {
+        panic!("rubber")
+    };
+    // At 100 Hz α_f = 1 − 2 = −1: the state says which factor is not positive.
+    let s = stage.state(Some(100.0), 25.0, 0.0);
+    assert_eq!(s.non_positive_factor(), Some((Factor::Frequency, -1.0)));
+    assert_eq!(stage.state(Some(10.0), 25.0, 0.0).non_positive_factor(), None);
+    // The minimum of a quadratic over a band: an end, or the vertex (1 − 0.02 f + 1e-4 f²
+    // has its vertex at 100 Hz, value 0), held beyond the measured range.
+    let p = stage.frequency_poly.clone().unwrap();
+    assert_eq!(p.min_over([0.0, 200.0]), (200.0, -3.0));
+    let bowl = Poly {
+        coeffs: [1e-4, -0.02, 1.0],
+        range: None,
+    };
+    assert_eq!(bowl.min_over([0.0, 300.0]), (100.0, 0.0));
+    let held = Poly {
+        range: Some([0.0, 40.0]),
+        ..p
+    };
+    assert_eq!(held.min_over([0.0, 1000.0]), (40.0, 1.0 - 0.02 * 40.0));
+    // The time domain refuses before fitting: 1500 rpm excites up to 24 × 25 = 600 Hz.
+    let run = simulate(
+        &model,
+        RunKind::Steady {
+            speed_rpm: 1500.0,
+            duration_s: 0.1,
+        },
+        RunOptions::default(),
+        &mut |_| true,
+    );
+    match run {
+        Err(TransientError::Physics(PhysicsError::FrequencyFactor {
+            connection,
+            frequency_hz,
+            value,
+        })) => {
+            assert_eq!(connection, "r");
+            assert!(frequency_hz > 50.0 && value <= 0.0, "{frequency_hz} Hz: {value}");
+        }
+        other => panic!("expected a refusal, got {:?}", other.map(|_| ())),
+    }
+}

@@ -116,6 +116,7 @@ thermal = { capacity_j_per_k = 40.0, conductance_w_per_k = 8.0, ambient_c = 25.0
 at = "a"
 order = 1.0
 amplitude = 25.0
+phase_deg = 0.0
 "#;
     let model = parse_model(text, "heat.toml").unwrap();
     let speed_rpm = 3000.0;

@@ -59,6 +59,7 @@ damping = 1.5
 at = "engine"
 order = 1.0
 amplitude = 100.0
+phase_deg = 0.0
 [[harmonic]]
 at = "engine"
 order = 2.5
@@ -203,6 +204,7 @@ frequency_poly_range = [0.0, 300.0]
 at = "a"
 order = 1.0
 amplitude = 20.0
+phase_deg = 0.0
 "#;
 
 /// The steady order-1 IAS amplitude of [`RUBBER_1DOF`] at 2400 rpm (40 Hz, near its

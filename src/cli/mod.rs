@@ -17,6 +17,7 @@ mod progress;
 mod response;
 mod simulate;
 mod synth;
+mod values;
 
 use clap::{Parser, Subcommand};
 use error::CliError;

@@ -4,12 +4,16 @@
 use super::error::CliError;
 use super::format::{emit, number, outln, print_json, print_warnings, table};
 use super::input::{check_load, load_model};
+use super::values;
 use serde_json::{Map, json};
 use torsim::modal::{damped_modes, modes};
 use torsim::physics::{OperatingPoint, System};
 
 /// Runs the command.
 pub fn run(model_arg: &str, speed_rpm: Option<f64>, load: f64, json: bool) -> Result<(), CliError> {
+    let speed_rpm = speed_rpm
+        .map(|n| values::speed_rpm("--speed-rpm", n))
+        .transpose()?;
     let model = load_model(model_arg)?;
     let point = OperatingPoint {
         load: check_load(load)?,
@@ -36,13 +40,17 @@ pub fn run(model_arg: &str, speed_rpm: Option<f64>, load: f64, json: bool) -> Re
                 "shape": shape,
             }));
         }
-        return print_json(&json!({
+        let mut doc = json!({
             "model": model.name,
-            "speed_rpm": speed_rpm,
             "load": point.load,
             "rigid_body_modes": system.rigid_body_modes,
             "modes": list,
-        }));
+        });
+        // Echoed only when given: no null in the output (issue 13).
+        if let Some(n) = speed_rpm {
+            doc["speed_rpm"] = number(n, "speed")?;
+        }
+        return print_json(&doc);
     }
     let mut text = String::new();
     outln!(
@@ -66,7 +74,8 @@ pub fn run(model_arg: &str, speed_rpm: Option<f64>, load: f64, json: bool) -> Re
                 format!("{}", i + 1),
                 format!("{:.3}", m.frequency_hz),
                 format!("{:.3}", d.frequency_hz),
-                format!("{:.2}", 100.0 * d.damping_ratio),
+                // `+ 0.0` turns −0 into 0: an undamped mode prints 0.00, not -0.00.
+                format!("{:.2}", 100.0 * d.damping_ratio + 0.0),
             ];
             row.extend(m.shape_by_node(&system).iter().map(|v| format!("{v:+.4}")));
             row
@@ -74,4 +83,18 @@ pub fn run(model_arg: &str, speed_rpm: Option<f64>, load: f64, json: bool) -> Re
         .collect();
     text += &table(&header, &rows);
     emit(&text)
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn nonsense_speeds_are_refused() {
+        for n in [f64::NAN, -5.0, 0.0, 1e300] {
+            let e = super::run("preset:test-rig-mod1", Some(n), 1.0, true).unwrap_err();
+            assert_eq!(e.code, 2);
+            let text = e.error.to_string();
+            assert!(text.starts_with("--speed-rpm "), "{text}");
+            assert!(text.contains("finite, > 0 and at most 100000 rpm"), "{text}");
+        }
+    }
 }

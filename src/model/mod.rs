@@ -7,6 +7,7 @@ pub mod engine_types;
 pub mod error;
 pub mod graph;
 mod key_lines;
+pub mod names;
 pub mod operation_types;
 pub mod presets;
 pub mod read;

@@ -23,12 +23,14 @@ use super::{ModelError, validate};
 /// Errors carry the file, the line (of the offending key, or of the header of the table
 /// that lacks a required key) and the key path, e.g. `connection[2].stiffness`.
 pub fn parse_model(text: &str, file: &str) -> Result<Model, ModelError> {
+    // A UTF-8 byte-order mark (Windows editors write one) is not part of the TOML.
+    let text = text.strip_prefix('\u{FEFF}').unwrap_or(text);
     let lines = Lines::new(text);
     let doc = Document::parse(text).map_err(|e| ModelError {
         file: Some(file.to_string()),
         line: e.span().map(|s| lines.line_of(s.start)),
         key: String::new(),
-        message: format!("TOML syntax error: {}", e.message().trim()),
+        message: syntax_message(text, &e),
     })?;
     let key_lines = KeyLines::new(doc.as_table(), &lines);
     let locate = |err: ModelError| {
@@ -43,12 +45,48 @@ pub fn parse_model(text: &str, file: &str) -> Result<Model, ModelError> {
     Ok(model)
 }
 
+/// A TOML syntax error for a person; a duplicate key is named, from the error's span
+/// (issue 13: "duplicate key" alone gave the line but not the key).
+fn syntax_message(text: &str, e: &toml_edit::TomlError) -> String {
+    let message = e.message().trim();
+    let spanned = e
+        .span()
+        .and_then(|s| text.get(s))
+        .map(str::trim)
+        .filter(|s| !s.is_empty() && !s.contains('\n'));
+    match spanned {
+        Some(key) if message == "duplicate key" => format!(
+            "TOML syntax error: duplicate key `{key}` (a key may be given once per table)"
+        ),
+        _ => format!("TOML syntax error: {message}"),
+    }
+}
+
 /// Reads, parses and validates a model file.
+///
+/// Text that is not UTF-8 is refused with the line and byte offset of the first bad
+/// byte (issue 13).
 pub fn read_model_file(path: &Path) -> Result<Model, ModelError> {
-    let text = std::fs::read_to_string(path).map_err(|e| {
-        ModelError::at("", format!("cannot read: {e}")).in_file(path.display().to_string())
+    let file = path.display().to_string();
+    let bytes = std::fs::read(path)
+        .map_err(|e| ModelError::at("", format!("cannot read: {e}")).in_file(&file))?;
+    let text = std::str::from_utf8(&bytes).map_err(|e| {
+        let offset = e.valid_up_to();
+        let line = 1 + bytes[..offset].iter().filter(|&&b| b == b'\n').count();
+        ModelError {
+            line: Some(line),
+            ..ModelError::at(
+                "",
+                format!(
+                    "not valid UTF-8 at byte offset {offset} (byte 0x{:02X}); save the \
+                     model file as UTF-8",
+                    bytes[offset]
+                ),
+            )
+            .in_file(&file)
+        }
     })?;
-    parse_model(&text, &path.display().to_string())
+    parse_model(text, &file)
 }
 
 fn model(root: &Tab) -> Result<Model, ModelError> {

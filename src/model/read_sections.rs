@@ -104,7 +104,8 @@ pub(super) fn harmonic(t: &Tab) -> Result<Harmonic, ModelError> {
         at: t.str("at")?,
         order: t.f64("order")?,
         amplitude,
-        phase_deg: t.f64_or("phase_deg", 0.0)?,
+        // Required: `spec/model-format.md` gives no default (issue 13).
+        phase_deg: t.f64("phase_deg")?,
     })
 }
 

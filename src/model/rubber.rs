@@ -4,6 +4,30 @@
 
 use super::types::{Poly, RubberStage, RubberStiffness};
 
+/// Rubber temperatures the seed 000 law is taken to hold for, °C: `[−100, 300]`.
+///
+/// The temperature polynomials (eq. 10–11) are fitted over a few tens of degrees around
+/// room temperature and held at their end values beyond; what they cannot describe is
+/// rubber that is no longer rubber. Below about −100 °C every elastomer is glassy (natural
+/// rubber's glass transition is near −70 °C, silicone's near −125 °C but it is not used
+/// in these couplings), and above about 300 °C it decomposes. A temperature outside this
+/// range (−300 °C, below absolute zero, was accepted before issue 13) is refused rather
+/// than turned into a stiffness.
+pub const TEMPERATURE_RANGE_C: [f64; 2] = [-100.0, 300.0];
+
+/// `None` when `temperature_c` lies in [`TEMPERATURE_RANGE_C`], else why not.
+pub fn temperature_problem(temperature_c: f64) -> Option<String> {
+    let [lo, hi] = TEMPERATURE_RANGE_C;
+    if temperature_c.is_finite() && (lo..=hi).contains(&temperature_c) {
+        None
+    } else {
+        Some(format!(
+            "{temperature_c} °C is outside the rubber law's range {lo} … {hi} °C (below \
+             it rubber is glassy, above it, it decomposes; absolute zero is −273.15 °C)"
+        ))
+    }
+}
+
 /// Which correction factor a warning is about.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Factor {
@@ -65,6 +89,25 @@ impl Poly {
         }
     }
 
+    /// The smallest value over `[lo, hi]` and where it is: `(x, value)`. The factor is
+    /// held beyond the measured range, so the search is over the range's part of the
+    /// interval; a quadratic's minimum is at an end or at its vertex.
+    pub fn min_over(&self, [lo, hi]: [f64; 2]) -> (f64, f64) {
+        let (lo, hi) = (self.clamp(lo), self.clamp(hi));
+        let [a2, a1, _] = self.coeffs;
+        let vertex = (a2 > 0.0)
+            .then(|| -a1 / (2.0 * a2))
+            .filter(|x| (lo..=hi).contains(x));
+        [Some(lo), Some(hi), vertex]
+            .into_iter()
+            .flatten()
+            .map(|x| (x, self.eval(x)))
+            .fold((lo, f64::INFINITY), |best, (x, v)| {
+                // A NaN value counts as the smallest: it must be refused too.
+                if v < best.1 || v.is_nan() { (x, v) } else { best }
+            })
+    }
+
     /// True when `x` lies outside the measured range.
     pub fn is_outside(&self, x: f64) -> bool {
         self.range.is_some_and(|[lo, hi]| x < lo || x > hi)
@@ -97,6 +140,23 @@ pub struct RubberState {
     pub psi: f64,
     /// Polynomials evaluated outside their measured range.
     pub warnings: Vec<RangeWarning>,
+}
+
+impl RubberState {
+    /// The first correction factor that is not finite and > 0 at this operating point
+    /// (α_x secant and tangent, α_f, α_Tc, α_Tξ), with its value: a stiffness or damping
+    /// from it would be negative or zero, which no rubber has (issue 13).
+    pub fn non_positive_factor(&self) -> Option<(Factor, f64)> {
+        [
+            (Factor::Amplitude, self.alpha_x),
+            (Factor::Amplitude, self.alpha_x_tangent),
+            (Factor::Frequency, self.alpha_f),
+            (Factor::TemperatureStiffness, self.alpha_tc),
+            (Factor::TemperatureDamping, self.alpha_txi),
+        ]
+        .into_iter()
+        .find(|(_, v)| !(v.is_finite() && *v > 0.0))
+    }
 }
 
 /// Evaluates an optional correction polynomial (a missing one is the factor 1),

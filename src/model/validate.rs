@@ -8,6 +8,7 @@ use std::collections::HashSet;
 
 use super::error::ModelError;
 use super::graph;
+use super::names::check_name;
 use super::validate_engine;
 use super::{ConnectionKind, GROUND, Model, Poly, RubberStage, RubberStiffness};
 
@@ -85,6 +86,12 @@ pub(crate) fn increasing(key: &str, values: &[f64]) -> Check {
 
 /// Checks a model for everything the file format requires (see the module docs).
 pub fn validate(model: &Model) -> Result<(), ModelError> {
+    if model.inertias.is_empty() {
+        fail(
+            "inertia",
+            "the model has no `[[inertia]]` nodes; a driveline needs at least one",
+        )?;
+    }
     nodes(model)?;
     connections(model)?;
     for (i, node) in model.inertias.iter().enumerate() {
@@ -129,9 +136,7 @@ fn nodes(model: &Model) -> Check {
         if node.name == GROUND {
             fail(format!("{key}.name"), "`ground` is reserved for the frame")?;
         }
-        if node.name.is_empty() {
-            fail(format!("{key}.name"), "node name is empty")?;
-        }
+        check_name(&format!("{key}.name"), "node", &node.name)?;
         if !seen.insert(node.name.as_str()) {
             fail(
                 format!("{key}.name"),
@@ -157,6 +162,7 @@ fn connections(model: &Model) -> Check {
                 known_node(model, &k(end), name)?;
             }
         }
+        check_name(&k("name"), "connection", &c.name)?;
         if c.from == GROUND && c.to == GROUND {
             fail(k("to"), "both ends are `ground`")?;
         }
@@ -215,7 +221,7 @@ fn rubber(key: &str, r: &RubberStage) -> Check {
         }
     }
     positive(&k("psi"), r.psi)?;
-    finite(&k("temperature_c"), r.temperature_c)?;
+    temperature(&k("temperature_c"), r.temperature_c)?;
     if r.amplitude_poly.is_some() && matches!(r.stiffness, RubberStiffness::Direct(_)) {
         fail(
             k("amplitude_poly"),
@@ -236,7 +242,7 @@ fn rubber(key: &str, r: &RubberStage) -> Check {
     if let Some(t) = &r.thermal {
         positive(&k("thermal.capacity_j_per_k"), t.capacity_j_per_k)?;
         positive(&k("thermal.conductance_w_per_k"), t.conductance_w_per_k)?;
-        finite(&k("thermal.ambient_c"), t.ambient_c)?;
+        temperature(&k("thermal.ambient_c"), t.ambient_c)?;
     }
     let temperatures = std::iter::once(("temperature_c", r.temperature_c)).chain(
         r.thermal
@@ -256,6 +262,14 @@ fn rubber(key: &str, r: &RubberStage) -> Check {
         }
     }
     Ok(())
+}
+
+/// A rubber temperature within [`super::rubber::TEMPERATURE_RANGE_C`] (issue 13).
+fn temperature(key: &str, temperature_c: f64) -> Check {
+    match super::rubber::temperature_problem(temperature_c) {
+        None => Ok(()),
+        Some(problem) => fail(key, problem),
+    }
 }
 
 fn poly_shape(key: &str, p: &Poly) -> Check {

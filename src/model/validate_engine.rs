@@ -22,6 +22,18 @@ pub(crate) fn engine(model: &Model, e: &Engine) -> Check {
     if e.cylinders < 1 {
         fail("engine.cylinders", "must be at least 1")?;
     }
+    let max_cylinders = crate::limits::current().max_cylinders;
+    if e.cylinders as usize > max_cylinders {
+        fail(
+            "engine.cylinders",
+            format!(
+                "{} cylinders is more than the limit of {max_cylinders} (issue 13: the \
+                 time domain's cost grows with the cylinders; raise the limit with \
+                 --max-cylinders)",
+                e.cylinders
+            ),
+        )?;
+    }
     if e.strokes != 2 && e.strokes != 4 {
         fail(
             "engine.strokes",
@@ -153,7 +165,7 @@ pub(crate) fn harmonics(model: &Model) -> Check {
     for (i, h) in model.harmonics.iter().enumerate() {
         let key = |sub: &str| format!("harmonic[{i}].{sub}");
         known_node(model, &key("at"), &h.at)?;
-        positive(&key("order"), h.order)?;
+        order(&key("order"), h.order)?;
         finite(&key("phase_deg"), h.phase_deg)?;
         match &h.amplitude {
             HarmonicAmplitude::Constant(a) => non_negative(&key("amplitude"), *a)?,
@@ -194,8 +206,15 @@ pub(crate) fn operation_and_expect(model: &Model) -> Check {
     if let Some(r) = op.operating_range_rpm {
         range("operation.operating_range_rpm", r)?;
     }
+    if op.orders.as_ref().is_some_and(Vec::is_empty) {
+        fail(
+            "operation.orders",
+            "is empty: a response with no orders shows nothing; list at least one order, \
+             or leave `orders` out for every multiple of 0.5 (1 for a 2-stroke) up to 12",
+        )?;
+    }
     for (i, q) in op.orders.iter().flatten().enumerate() {
-        positive(&format!("operation.orders[{i}]"), *q)?;
+        order(&format!("operation.orders[{i}]"), *q)?;
     }
     for (i, r) in op.regimes.iter().enumerate() {
         positive(&format!("operation.regimes[{i}].speed_rpm"), r.speed_rpm)?;
@@ -225,6 +244,22 @@ pub(crate) fn operation_and_expect(model: &Model) -> Check {
     }
     if !ex.no_resonance_in_operating_range.is_empty() && op.operating_range_rpm.is_none() {
         fail(key, "needs `operating_range_rpm` in [operation]")?;
+    }
+    Ok(())
+}
+
+/// An engine order: finite, > 0 and at most `limits::current().max_order` (issue 13).
+fn order(key: &str, q: f64) -> Check {
+    positive(key, q)?;
+    let max_order = crate::limits::current().max_order;
+    if q > max_order {
+        fail(
+            key,
+            format!(
+                "order {q} is above the limit max_order = {max_order} (issue 13: orders \
+                 allocate and loop in sweeps; a front end may raise the limit)"
+            ),
+        )?;
     }
     Ok(())
 }

@@ -253,7 +253,8 @@ fn harmonic(out: &mut String, h: &Harmonic) {
         ]),
     };
     kv(out, "amplitude", amplitude);
-    opt_kv(out, "phase_deg", h.phase_deg, 0.0);
+    // Always written: the key is required (no default in `spec/model-format.md`).
+    kv(out, "phase_deg", num(h.phase_deg));
 }
 
 fn operation(out: &mut String, op: &Operation) {

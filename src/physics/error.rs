@@ -9,7 +9,7 @@ pub enum PhysicsError {
     #[error(transparent)]
     Model(#[from] ModelError),
     /// The model has no nodes.
-    #[error("the model has no nodes")]
+    #[error("the model has no `[[inertia]]` nodes")]
     Empty,
     /// A rubber stage cannot carry the mean torque within 10 rad of twist.
     #[error(

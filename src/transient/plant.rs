@@ -8,6 +8,7 @@
 
 use super::TransientError;
 use super::maxwell::{MaxwellChain, excited_band_hz};
+use crate::physics::PhysicsError;
 use crate::model::{ConnectionKind, GROUND, HarmonicAmplitude, Model, Poly};
 use crate::physics::{OperatingPoint, System, engine};
 
@@ -258,6 +259,21 @@ impl Plant {
                     ),
                 },
                 ConnectionKind::Rubber(stage) => {
+                    // α_f ≤ 0 anywhere from rest to the top of the band is refused before
+                    // fitting; the fit would chase a negative stiffness (issue 13).
+                    if let Some((frequency_hz, value)) = stage
+                        .frequency_poly
+                        .as_ref()
+                        .map(|p| p.min_over([0.0, band[1]]))
+                        .filter(|(_, v)| !(*v > 0.0))
+                    {
+                        return Err(PhysicsError::FrequencyFactor {
+                            connection: c.name.clone(),
+                            frequency_hz,
+                            value,
+                        }
+                        .into());
+                    }
                     let mut chain = MaxwellChain::fit(stage, band);
                     let viscous_s = viscous_above_hz.map_or(0.0, |f| chain.take_fast_arms(f));
                     let arm_offset = state_len;

@@ -104,6 +104,7 @@ ratio = 2.0
 at = "crank"
 order = 2.0
 amplitude = 50.0
+phase_deg = 0.0
 [load]
 at = "propeller"
 damping = 20
