@@ -17,7 +17,19 @@
 //!   the step collapse on round-off rather than be more accurate.
 //! - `max_speed_rpm` 100 000: beyond any reciprocating engine or test-bench motor
 //!   (turbochargers spin faster, but are not drivelines of this kind).
-//! - `max_grid_points` 2²⁶: points of an angle grid, speed sweep or Campbell grid.
+//! - `max_grid_points` 2²⁶: points of an angle grid (0.5 GiB of `f64`).
+//! - `max_sweep_points` 10⁶: speeds of a Campbell or response sweep, and speeds × orders of
+//!   a response sweep (each point is a complex solve and a few `f64` per node and
+//!   connection: 10⁶ points take seconds and tens of MB).
+//! - `step_budget_factor` 200: a time-domain run may take at most 200 times the steps a
+//!   well-posed run needs, `t / h_max + 1000` by time `t` (`h_max` the step the
+//!   excitation allows, [`crate::transient::RunOptions::min_steps_per_cycle`]). Measured:
+//!   well-posed runs take 1–3 times that; a 10¹⁰ N·m/rad shaft on 5 g·m² (a stiff mode at
+//!   38 kHz the integrator must resolve) 60–70 times and still ends in 3 s; an explicit
+//!   run held back by stability, or a step near collapse, thousands.
+//!
+//! Checks: [`check_count`] and [`check_value`] give a [`LimitError`] that names the key or
+//! flag, the value and the limit.
 
 use std::sync::RwLock;
 
@@ -34,8 +46,14 @@ pub struct Limits {
     pub min_rtol: f64,
     /// Highest speed of any shaft, rpm (default 100 000).
     pub max_speed_rpm: f64,
-    /// Most points of an angle grid, speed sweep or Campbell grid (default 2²⁶).
+    /// Most points of an angle grid (default 2²⁶).
     pub max_grid_points: usize,
+    /// Most speeds of a Campbell or response sweep, and most speeds × orders of a
+    /// response sweep (default 10⁶).
+    pub max_sweep_points: usize,
+    /// Integrator steps a time-domain run may take, as a multiple of what a well-posed
+    /// run needs (default 200; see the module docs).
+    pub step_budget_factor: f64,
 }
 
 impl Limits {
@@ -47,6 +65,8 @@ impl Limits {
         min_rtol: 1e-12,
         max_speed_rpm: 100_000.0,
         max_grid_points: 1 << 26,
+        max_sweep_points: 1_000_000,
+        step_budget_factor: 200.0,
     };
 }
 
@@ -75,6 +95,54 @@ pub fn set(limits: Limits) {
     }
 }
 
+/// A size or value beyond a limit of [`Limits`] (issue 13: the error names the key or
+/// flag and the limit).
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("{what} = {value:e} exceeds the limit of {limit:e}{}", raise_hint(.flag))]
+pub struct LimitError {
+    /// What was bounded, with the key or flag it came from, e.g. "`--duration-s` × `--rate-hz` (samples)".
+    pub what: String,
+    /// The value asked for.
+    pub value: f64,
+    /// The limit in force.
+    pub limit: f64,
+    /// The CLI flag that raises the limit for one run (`None`: a fixed bound).
+    pub flag: Option<&'static str>,
+}
+
+fn raise_hint(flag: &Option<&'static str>) -> String {
+    flag.map_or(String::new(), |f| format!(" (raise it with `{f}`)"))
+}
+
+/// `Ok` when `count` ≤ `limit`, else a [`LimitError`] for `what`, raised by `flag`.
+pub fn check_count(
+    what: &str,
+    count: f64,
+    limit: usize,
+    flag: Option<&'static str>,
+) -> Result<(), LimitError> {
+    check_value(what, count, limit as f64, flag)
+}
+
+/// `Ok` when `value` is finite and ≤ `limit`, else a [`LimitError`].
+pub fn check_value(
+    what: &str,
+    value: f64,
+    limit: f64,
+    flag: Option<&'static str>,
+) -> Result<(), LimitError> {
+    if value <= limit {
+        Ok(())
+    } else {
+        Err(LimitError {
+            what: what.to_string(),
+            value,
+            limit,
+            flag,
+        })
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -86,5 +154,17 @@ mod tests {
         assert_eq!(d.max_order, 100.0);
         assert_eq!(d.max_cylinders, 64);
         assert_eq!(d.min_rtol, 1e-12);
+        assert_eq!(d.max_sweep_points, 1_000_000);
+    }
+
+    #[test]
+    fn limit_errors_name_the_flag_and_the_limit() {
+        let e = check_count("samples", 1e13, 1 << 27, Some("--max-samples")).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "samples = 1e13 exceeds the limit of 1.34217728e8 (raise it with `--max-samples`)"
+        );
+        assert!(check_count("samples", 1e3, 1 << 27, None).is_ok());
+        assert!(check_value("x", f64::NAN, 1.0, None).is_err());
     }
 }

@@ -77,11 +77,21 @@ pub fn speed_grid(
             "--step-rpm {step}: must be > 0"
         )));
     }
-    if (to - from) / step > 1.0e6 {
-        return Err(CliError::input(anyhow::anyhow!(
-            "--step-rpm {step}: more than a million speeds"
-        )));
-    }
+    let limits = torsim::limits::current();
+    torsim::limits::check_value(
+        "--to-rpm",
+        to,
+        limits.max_speed_rpm,
+        Some("--max-speed-rpm"),
+    )
+    .map_err(CliError::input)?;
+    torsim::limits::check_count(
+        "speeds of the sweep (--from-rpm … --to-rpm by --step-rpm)",
+        (to - from) / step + 1.0,
+        limits.max_sweep_points,
+        Some("--max-sweep-points"),
+    )
+    .map_err(CliError::input)?;
     Ok(torsim::modal::speed_grid(from, to, step))
 }
 

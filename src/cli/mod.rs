@@ -35,6 +35,65 @@ pub struct Cli {
     /// The command; none opens the model.
     #[command(subcommand)]
     pub command: Option<Command>,
+    /// Limits raised (or lowered) for this run.
+    #[command(flatten)]
+    pub limits: LimitArgs,
+}
+
+/// The `--max-*` flags: each replaces one default of `torsim::limits::Limits` for this
+/// run (issue 13: sizes are bounded by documented defaults that a flag can raise).
+#[derive(Debug, Clone, Copy, clap::Args)]
+pub struct LimitArgs {
+    /// Most samples per channel of a simulated run or a recording (default 2^27).
+    #[arg(long, global = true, value_name = "N")]
+    pub max_samples: Option<usize>,
+    /// Highest engine order analysed or swept (default 100).
+    #[arg(long, global = true, value_name = "ORDER")]
+    pub max_order: Option<f64>,
+    /// Most cylinders of an engine (default 64).
+    #[arg(long, global = true, value_name = "N")]
+    pub max_cylinders: Option<usize>,
+    /// Highest shaft speed, rpm (default 100000).
+    #[arg(long, global = true, value_name = "RPM")]
+    pub max_speed_rpm: Option<f64>,
+    /// Most speeds, and speeds × orders, of a Campbell or response sweep (default 10^6).
+    #[arg(long, global = true, value_name = "N")]
+    pub max_sweep_points: Option<usize>,
+}
+
+impl LimitArgs {
+    /// The limits in force with these flags over the defaults; refuses a limit that is
+    /// not a finite number > 0.
+    pub fn limits(&self) -> Result<torsim::limits::Limits, CliError> {
+        let mut limits = torsim::limits::Limits::DEFAULT;
+        for (flag, value) in [
+            ("--max-order", self.max_order),
+            ("--max-speed-rpm", self.max_speed_rpm),
+        ] {
+            if let Some(v) = value
+                && !(v.is_finite() && v > 0.0)
+            {
+                return Err(CliError::input(anyhow::anyhow!(
+                    "{flag} {v}: must be a finite number > 0"
+                )));
+            }
+        }
+        for (flag, value) in [
+            ("--max-samples", self.max_samples),
+            ("--max-cylinders", self.max_cylinders),
+            ("--max-sweep-points", self.max_sweep_points),
+        ] {
+            if value == Some(0) {
+                return Err(CliError::input(anyhow::anyhow!("{flag} 0: must be > 0")));
+            }
+        }
+        limits.max_samples = self.max_samples.unwrap_or(limits.max_samples);
+        limits.max_order = self.max_order.unwrap_or(limits.max_order);
+        limits.max_cylinders = self.max_cylinders.unwrap_or(limits.max_cylinders);
+        limits.max_speed_rpm = self.max_speed_rpm.unwrap_or(limits.max_speed_rpm);
+        limits.max_sweep_points = self.max_sweep_points.unwrap_or(limits.max_sweep_points);
+        Ok(limits)
+    }
 }
 
 /// Headless commands.
@@ -123,6 +182,7 @@ pub enum Command {
 
 /// Runs the parsed command line.
 pub fn run(cli: Cli) -> Result<(), CliError> {
+    torsim::limits::set(cli.limits.limits()?);
     match cli.command {
         None => crate::gui::run(cli.model),
         Some(Command::Modes {

@@ -23,6 +23,11 @@ pub fn run(sweep: &Sweep, orders: Option<Vec<f64>>, json: bool) -> Result<(), Cl
     )?;
     print_warnings(&system.warnings);
     let orders = orders.unwrap_or_else(|| model.orders());
+    if orders.is_empty() {
+        return Err(CliError::input(anyhow::anyhow!(
+            "no orders to compute: give --orders or `orders` in [operation]"
+        )));
+    }
     if let Some(bad) = orders.iter().find(|q| !(q.is_finite() && **q > 0.0)) {
         return Err(CliError::input(anyhow::anyhow!(
             "--orders: order {bad} must be > 0"

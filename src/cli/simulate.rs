@@ -117,10 +117,11 @@ pub fn run(a: &SimulateArgs) -> Result<(), CliError> {
     progress.finish();
     let sim = result.map_err(|e| match e {
         torsim::transient::TransientError::Model(_)
+        | torsim::transient::TransientError::Limit(_)
         | torsim::transient::TransientError::Physics(_) => CliError::input(e),
         _ => CliError::failed(e),
     })?;
-    let mut warnings = Vec::new();
+    let mut warnings = sim.warnings.clone();
     if !sim.settling.converged {
         warnings.push(format!(
             "the run did not settle within {} s (cycle-to-cycle change {:.2e}); recorded anyway",

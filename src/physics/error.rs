@@ -1,5 +1,6 @@
 //! Errors of the linear analyses.
 
+use crate::limits::LimitError;
 use crate::model::ModelError;
 
 /// Why an analysis could not be done.
@@ -8,6 +9,9 @@ pub enum PhysicsError {
     /// The model is invalid.
     #[error(transparent)]
     Model(#[from] ModelError),
+    /// A size beyond [`crate::limits::Limits`] (orders, sweep points).
+    #[error(transparent)]
+    Limit(#[from] LimitError),
     /// The model has no nodes.
     #[error("the model has no `[[inertia]]` nodes")]
     Empty,

@@ -67,6 +67,29 @@ pub fn forced_response_orders(
     sweep(system, excitation, speeds_rpm, false)
 }
 
+/// Every order ≤ [`crate::limits::Limits::max_order`] (the synthesis samples a cycle at
+/// 16 points per period of the highest order: order 10⁹ asked 137 GB, issue 13), and
+/// speeds and speeds × orders ≤ [`crate::limits::Limits::max_sweep_points`].
+fn check_sizes(orders: &[f64], n_speeds: usize) -> Result<(), PhysicsError> {
+    let limits = crate::limits::current();
+    for &q in orders {
+        crate::limits::check_value("order (--orders)", q, limits.max_order, Some("--max-order"))?;
+    }
+    crate::limits::check_count(
+        "speeds of the sweep (--from-rpm … --to-rpm by --step-rpm)",
+        n_speeds as f64,
+        limits.max_sweep_points,
+        Some("--max-sweep-points"),
+    )?;
+    crate::limits::check_count(
+        "speeds × orders of the sweep",
+        (n_speeds * orders.len()) as f64,
+        limits.max_sweep_points,
+        Some("--max-sweep-points"),
+    )?;
+    Ok(())
+}
+
 /// The sweep; `synthesize`: also the synthesized peaks.
 fn sweep(
     system: &System,
@@ -76,6 +99,7 @@ fn sweep(
 ) -> Result<Response, PhysicsError> {
     let n = system.dof_count();
     let orders = &excitation.orders;
+    check_sizes(orders, speeds_rpm.len())?;
     let (n_nodes, n_orders, n_speeds) = (system.node_names.len(), orders.len(), speeds_rpm.len());
     let n_conn = system.elements.len();
     let mut response = Response {

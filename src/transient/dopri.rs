@@ -80,6 +80,9 @@ pub struct Dopri5 {
     err_prev: f64,
     /// Accepted and rejected steps so far.
     pub steps: (u64, u64),
+    /// Index of the state with the largest scaled error in the last step tried (the one
+    /// that holds the step size back).
+    pub worst_state: usize,
 }
 
 impl Dopri5 {
@@ -111,6 +114,7 @@ impl Dopri5 {
             atol,
             err_prev: 1e-4,
             steps: (0, 0),
+            worst_state: 0,
         }
     }
 
@@ -127,6 +131,7 @@ impl Dopri5 {
                 return Err(TransientError::StepCollapse {
                     time_s: self.t,
                     step_s: h,
+                    state: format!("state #{}", self.worst_state),
                 });
             }
             // Stages 2..7; stage 7 is evaluated at the new point (FSAL).
@@ -153,6 +158,9 @@ impl Dopri5 {
                 sum += r * r;
             }
             let err = (sum / n as f64).sqrt();
+            if !(err <= 1.0) {
+                self.worst_state = self.worst_component(h);
+            }
             if !err.is_finite() {
                 self.h = 0.2 * h;
                 self.steps.1 += 1;
@@ -176,6 +184,25 @@ impl Dopri5 {
             self.h = h * (0.9 * err.powf(-0.2)).clamp(0.2, 1.0);
             self.steps.1 += 1;
         }
+    }
+
+    /// Index of the largest scaled error of a step of `h` just tried (stages in `k`); a
+    /// non-finite one first. Only computed for rejected steps, to name the culprit.
+    fn worst_component(&self, h: f64) -> usize {
+        let mut worst = (0, -1.0);
+        for i in 0..self.y.len() {
+            let mut e = E[0] * self.f[i];
+            for (ej, kj) in E[1..].iter().zip(&self.k) {
+                e += ej * kj[i];
+            }
+            let scale = self.atol[i] + self.rtol * self.y[i].abs().max(self.y_stage[i].abs());
+            let r = (h * e / scale).abs();
+            let r = if r.is_finite() { r } else { f64::INFINITY };
+            if r > worst.1 {
+                worst = (i, r);
+            }
+        }
+        worst.0
     }
 
     /// The state at `t` within the last accepted step, by cubic Hermite interpolation.

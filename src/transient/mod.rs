@@ -7,8 +7,12 @@
 //!   load of a free driveline;
 //! - [`dopri`]: Dormand–Prince 5(4) with error control and dense output;
 //! - [`run`]: settling cycle by cycle, then recording a steady run or a ramp
-//!   ([`speed`]); [`observe`]: the run reported in chunks while it goes.
+//!   ([`speed`]); [`observe`]: the run reported in chunks while it goes;
+//! - [`validate`]: what a run may ask for, checked against [`crate::limits`] before
+//!   anything is allocated; [`budget`]: the step budget that stops a run which would not
+//!   end, and the element named when a step collapses or the budget runs out.
 
+pub mod budget;
 pub mod dopri;
 mod error;
 mod export;
@@ -23,6 +27,7 @@ pub mod run;
 pub mod speed;
 mod start;
 pub mod stepper;
+pub mod validate;
 
 pub use error::TransientError;
 pub use export::to_recording;

@@ -42,6 +42,9 @@ pub struct Ros2 {
     pub atol: Vec<f64>,
     /// Accepted and rejected steps so far.
     pub steps: (u64, u64),
+    /// Index of the state with the largest scaled error in the last step tried (the one
+    /// that holds the step size back).
+    pub worst_state: usize,
     scratch: Vec<f64>,
 }
 
@@ -74,6 +77,7 @@ impl Ros2 {
             rtol,
             atol,
             steps: (0, 0),
+            worst_state: 0,
             scratch: vec![0.0; n],
         }
     }
@@ -111,6 +115,7 @@ impl Ros2 {
                 return Err(TransientError::StepCollapse {
                     time_s: self.t,
                     step_s: h,
+                    state: format!("state #{}", self.worst_state),
                 });
             }
             let refactor = self
@@ -156,6 +161,15 @@ impl Ros2 {
             }
             let err = (sum / n as f64).sqrt();
             if !err.is_finite() || err > 1.0 {
+                self.worst_state = (0..n)
+                    .map(|i| {
+                        let e = 0.5 * h * (k1[i] + k2[i]);
+                        let scale = self.atol[i] + self.rtol * self.y[i].abs().max(y_new[i].abs());
+                        let r = (e / scale).abs();
+                        (i, if r.is_finite() { r } else { f64::INFINITY })
+                    })
+                    .fold((0, -1.0), |w, x| if x.1 > w.1 { x } else { w })
+                    .0;
                 self.h = h * if err.is_finite() {
                     (0.9 / err.sqrt()).clamp(0.2, 0.9)
                 } else {

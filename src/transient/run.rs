@@ -3,6 +3,7 @@
 //! output rate (a steady speed for a duration, or a linear speed ramp).
 
 use super::TransientError;
+use super::budget::{StepBudget, bound_thermal_time_constants, name_collapse, state_name};
 use super::dopri::Dopri5;
 use super::maxwell::MaxwellChain;
 use super::observe::{Event, take_chunk};
@@ -11,6 +12,7 @@ use super::ros2::Ros2;
 use super::speed::SpeedProfile;
 use super::start::initial_state;
 use super::stepper::{Method, Stepper, is_stiff};
+use super::validate::check_run;
 use crate::model::Model;
 use std::f64::consts::TAU;
 
@@ -61,6 +63,12 @@ pub struct RunOptions {
     /// every arm is integrated). For runs of which only frequencies below a third of it
     /// matter: the fastest arms bound the explicit integrator's step.
     pub viscous_above_hz: Option<f64>,
+    /// Step budget: by simulated time `t` the run may take at most this × `(t / h_max +
+    /// 1000)` steps, `h_max` the largest step [`RunOptions::min_steps_per_cycle`] allows;
+    /// a run beyond it stops with [`TransientError::StepBudget`], which names the element
+    /// holding it back (default `None`: [`crate::limits::Limits::step_budget_factor`], 200;
+    /// well-posed runs take 1–3×).
+    pub step_budget_factor: Option<f64>,
 }
 
 impl Default for RunOptions {
@@ -74,6 +82,7 @@ impl Default for RunOptions {
             method: Method::Auto,
             min_steps_per_cycle: 180.0,
             viscous_above_hz: None,
+            step_budget_factor: None,
         }
     }
 }
@@ -120,6 +129,9 @@ pub struct Simulation {
     pub settling: Settling,
     /// Integrator steps (accepted, rejected).
     pub steps: (u64, u64),
+    /// What the run changed to be able to run, for a person (a thermal time constant
+    /// shorter than a step, [`super::budget::bound_thermal_time_constants`]).
+    pub warnings: Vec<String>,
 }
 
 /// Runs `kind` on `model`. `progress` is called with the fraction done (0–1) a few
@@ -156,21 +168,8 @@ pub fn simulate_observed(
             duration_s,
         } => (from_rpm, to_rpm, duration_s),
     };
-    for (what, v) in [
-        ("speed", from_rpm),
-        ("speed", to_rpm),
-        ("rate", options.rate_hz),
-        ("duration", duration_s),
-        ("steps per cycle", options.min_steps_per_cycle),
-        ("viscous limit", options.viscous_above_hz.unwrap_or(1.0)),
-    ] {
-        if !(v.is_finite() && v > 0.0) {
-            return Err(TransientError::Model(format!(
-                "{what} must be a positive number, got {v}"
-            )));
-        }
-    }
-    let plant = Plant::new(
+    check_run(model, kind, &options)?;
+    let mut plant = Plant::new(
         model,
         options.load,
         [from_rpm.min(to_rpm), from_rpm.max(to_rpm)],
@@ -183,6 +182,14 @@ pub fn simulate_observed(
     let atol = tolerances(&plant);
     let cycle_s = |rpm: f64| cycle_rad / (rpm * TAU / 60.0);
     let h_max = cycle_s(from_rpm.max(to_rpm)) / options.min_steps_per_cycle.max(1.0);
+    let warnings = bound_thermal_time_constants(&mut plant, h_max);
+    let plant = plant;
+    let budget = StepBudget {
+        factor: options
+            .step_budget_factor
+            .unwrap_or(crate::limits::current().step_budget_factor),
+        h_max_s: h_max,
+    };
     let mut solver = {
         let mut rhs =
             |t: f64, y: &[f64], dy: &mut [f64]| plant.derivatives(t, y, dy, &profile, &mut mass);
@@ -228,6 +235,7 @@ pub fn simulate_observed(
         &mut solver,
         cycle_s(from_rpm),
         settle_options,
+        &budget,
         &mut |f| observer(Event::Progress(f)),
     )?;
     let t0 = solver.t();
@@ -236,6 +244,7 @@ pub fn simulate_observed(
     }
     let samples = (duration_s * options.rate_hz).round() as usize;
     let mut sim = empty_simulation(&plant, samples, settling);
+    sim.warnings = warnings;
     let mut state = vec![0.0; plant.state_len];
     let mut next = 0;
     let t_end = t0 + duration_s;
@@ -248,8 +257,11 @@ pub fn simulate_observed(
             let mut rhs = |t: f64, y: &[f64], dy: &mut [f64]| {
                 plant.derivatives(t, y, dy, &profile, &mut mass)
             };
-            solver.step(t_end + 1.0 / options.rate_hz, &mut rhs)?;
+            solver
+                .step(t_end + 1.0 / options.rate_hz, &mut rhs)
+                .map_err(|e| name_collapse(&plant, &solver, e))?;
         }
+        budget.check(&plant, &solver)?;
         check_state(&plant, solver.t(), solver.y(), &profile)?;
         while next < samples && t0 + next as f64 / options.rate_hz <= solver.t() {
             let t = t0 + next as f64 / options.rate_hz;
@@ -281,6 +293,7 @@ fn settle(
     solver: &mut Stepper,
     cycle_s: f64,
     options: RunOptions,
+    budget: &StepBudget,
     progress: &mut dyn FnMut(f64) -> bool,
 ) -> Result<Settling, TransientError> {
     let n = plant.n_dof;
@@ -298,7 +311,10 @@ fn settle(
         while solver.t() < t_end - 1e-12 * t_end.max(1.0) {
             let mut rhs =
                 |t: f64, y: &[f64], dy: &mut [f64]| plant.derivatives(t, y, dy, profile, mass);
-            solver.step(t_end, &mut rhs)?;
+            solver
+                .step(t_end, &mut rhs)
+                .map_err(|e| name_collapse(plant, solver, e))?;
+            budget.check(plant, solver)?;
             check_state(plant, solver.t(), solver.y(), profile)?;
             peak = solver.y()[n..2 * n]
                 .iter()
@@ -366,30 +382,6 @@ fn check_state(
     Ok(())
 }
 
-/// A person's name for state `i`.
-fn state_name(plant: &Plant, i: usize) -> String {
-    let n = plant.n_dof;
-    let node_of = |d: usize| {
-        let names: Vec<&str> = plant
-            .system
-            .dof_of_node
-            .iter()
-            .enumerate()
-            .filter(|(_, x)| **x == d)
-            .map(|(k, _)| plant.system.node_names[k].as_str())
-            .collect();
-        names.join("+")
-    };
-    match i {
-        i if i < n => format!("vibration angle of `{}` (rad)", node_of(i)),
-        i if i < 2 * n => format!("vibration speed of `{}` (rad/s)", node_of(i - n)),
-        _ => format!(
-            "rubber internal state #{} (Maxwell arm or temperature)",
-            i - 2 * n
-        ),
-    }
-}
-
 fn empty_simulation(plant: &Plant, samples: usize, settling: Settling) -> Simulation {
     let sys = &plant.system;
     let thermal = plant.elements.iter().filter_map(|e| match &e.law {
@@ -422,6 +414,7 @@ fn empty_simulation(plant: &Plant, samples: usize, settling: Settling) -> Simula
             .collect(),
         settling,
         steps: (0, 0),
+        warnings: Vec::new(),
     }
 }
 

@@ -56,6 +56,27 @@ impl Stepper {
         }
     }
 
+    /// The step size it would try next, s.
+    pub fn h(&self) -> f64 {
+        match self {
+            Stepper::Explicit(s) => s.h,
+            Stepper::Implicit(s) => s.h,
+        }
+    }
+
+    /// The state whose error held the step back last ([`Dopri5::worst_state`]).
+    pub fn worst_state(&self) -> usize {
+        match self {
+            Stepper::Explicit(s) => s.worst_state,
+            Stepper::Implicit(s) => s.worst_state,
+        }
+    }
+
+    /// True for the explicit method.
+    pub fn is_explicit(&self) -> bool {
+        matches!(self, Stepper::Explicit(_))
+    }
+
     /// One accepted step, not beyond `t_end`.
     pub fn step<F: FnMut(f64, &[f64], &mut [f64])>(
         &mut self,
