@@ -1,4 +1,4 @@
-//! `torsim analyse RECORDING.csv [--json]`: order analysis of a recording or a simulated
+//! `torsim analyse RECORDING.csv [--bad-samples refuse|interpolate|drop] [--json]`: order analysis of a recording or a simulated
 //! CSV (the sidecar beside it): RMS, irregularity ratio and order amplitudes per station
 //! and per pair of stations, and for run-ups the STFT with order tracks.
 
@@ -6,12 +6,30 @@ use super::error::CliError;
 use super::format::{emit, number, numbers, order_key, outln, print_json, table};
 use serde_json::{Map, Value, json};
 use std::path::Path;
-use torsim::recording::read_recording;
+use torsim::recording::{BadSamples, ReadOptions, read_recording_with};
 use torsim::signal::{Analysis, StationAnalysis, analyse};
 
+/// Parses `--bad-samples`: `refuse`, `interpolate` or `drop` (issue 13).
+pub fn parse_bad_samples(text: &str) -> Result<BadSamples, String> {
+    BadSamples::parse(text)
+        .ok_or_else(|| format!("`{text}` is none of refuse, interpolate, drop"))
+}
+
 /// Runs the command.
-pub fn run(recording: &str, json: bool) -> Result<(), CliError> {
-    let rec = read_recording(Path::new(recording), None).map_err(CliError::input)?;
+pub fn run(recording: &str, bad_samples: BadSamples, json: bool) -> Result<(), CliError> {
+    let path = Path::new(recording);
+    // Issue 13: a missing CSV is named before its sidecar is looked for.
+    if !path.is_file() {
+        return Err(CliError::input(anyhow::anyhow!(
+            "{recording}: no such recording (the CSV does not exist or is not a file)"
+        )));
+    }
+    let options = ReadOptions { bad_samples };
+    let read = read_recording_with(path, None, &options).map_err(CliError::input)?;
+    for note in &read.notes {
+        eprintln!("note: {note}");
+    }
+    let rec = read.recording;
     let analysis =
         analyse(&rec).map_err(|e| CliError::input(anyhow::anyhow!("{recording}: {e}")))?;
     if json {

@@ -157,6 +157,10 @@ pub enum Command {
     Analyse {
         /// The recording's CSV (its sidecar, same stem `.toml`, beside it).
         recording: String,
+        /// Over-range or impossible samples: refuse (list them), interpolate (from their
+        /// neighbours) or drop (keep the longest stretch without them).
+        #[arg(long, default_value = "refuse", value_parser = analyse::parse_bad_samples)]
+        bad_samples: torsim::recording::BadSamples,
         /// Print one JSON document.
         #[arg(long)]
         json: bool,
@@ -198,7 +202,11 @@ pub fn run(cli: Cli) -> Result<(), CliError> {
             json,
         }) => response::run(&sweep, orders, json),
         Some(Command::Check { presets, json }) => check::run(&presets, json),
-        Some(Command::Analyse { recording, json }) => analyse::run(&recording, json),
+        Some(Command::Analyse {
+            recording,
+            bad_samples,
+            json,
+        }) => analyse::run(&recording, bad_samples, json),
         Some(Command::Simulate(args)) => simulate::run(&args),
         Some(Command::Compare(args)) => compare::run(&args),
         Some(Command::Synth(args)) => synth::run(&args),

@@ -58,6 +58,40 @@ pub enum Reason {
         /// Revolutions needed (two cycles).
         needed: f64,
     },
+    /// Bytes that are not UTF-8.
+    #[error("invalid UTF-8 at byte {offset} (the file must be UTF-8 text; a leading BOM is allowed)")]
+    InvalidUtf8 {
+        /// 0-based byte offset of the first invalid byte in the file.
+        offset: usize,
+    },
+    /// More data rows than [`crate::limits::Limits::max_samples`].
+    #[error("more than {limit} samples per channel (limit `max_samples`; raise it with --max-samples)")]
+    TooManySamples {
+        /// The limit.
+        limit: usize,
+    },
+    /// Sampling that is not uniform: a gap, or scatter of the time stamps beyond jitter
+    /// (see [`crate::recording::timing`]).
+    #[error("{0}")]
+    Timing(String),
+    /// Over-range or impossible samples, refused (`--bad-samples refuse`, the default).
+    #[error("{0}")]
+    BadSamples(String),
+    /// The sidecar's `speed_rpm` contradicts the data.
+    #[error(
+        "speed_rpm = {sidecar_rpm} but the reference's mean speed in {csv} is {data_rpm:.1} rpm: \
+         they differ by more than {tolerance_pct} % (fix the sidecar or pick the right CSV)"
+    )]
+    SpeedMismatch {
+        /// The sidecar's speed, rpm.
+        sidecar_rpm: f64,
+        /// The data's mean reference speed, rpm.
+        data_rpm: f64,
+        /// The CSV.
+        csv: String,
+        /// The tolerance, %.
+        tolerance_pct: f64,
+    },
     /// The sidecar is not valid TOML.
     #[error("TOML syntax error: {0}")]
     Toml(String),

@@ -3,14 +3,21 @@
 //! errors that name the file, the line, the column and the reason ([`RecordingError`]);
 //! [`write_recording`] writes one atomically (the simulator's `--csv`).
 
+pub mod bad_samples;
 pub mod error;
 pub mod read;
 pub mod sidecar;
+pub mod table;
+pub mod timing;
 pub mod types;
 pub mod write;
 
 pub use error::{Reason, RecordingError};
-pub use read::{parse_recording, read_recording, sidecar_path};
+pub use bad_samples::BadSamples;
+pub use read::{
+    ReadOptions, ReadOutcome, parse_recording, parse_recording_with, read_recording,
+    read_recording_with, sidecar_path,
+};
 pub use sidecar::{parse_sidecar, sidecar_string};
 pub use types::*;
 pub use write::{check_recording, csv_string, write_recording};

@@ -3,7 +3,7 @@
 
 use std::collections::BTreeMap;
 
-use toml_edit::{Document, Item, Table};
+use toml_edit::{Document, Item, TableLike};
 
 use super::error::{Reason, RecordingError};
 use super::types::{RecordingMeta, RunKind, Sensor};
@@ -19,6 +19,13 @@ const KEYS: [&str; 9] = [
     "strokes",
     "sensors",
 ];
+/// Absolute zero, °C: no temperature is below it (issue 13).
+pub const ABSOLUTE_ZERO_C: f64 = -273.15;
+/// Highest rubber temperature accepted, °C: natural, nitrile and silicone rubbers
+/// decompose below 300 °C, so a higher value is a unit mistake (K or °F), not a bench
+/// run (issue 13).
+pub const MAX_TEMPERATURE_C: f64 = 300.0;
+
 const SENSOR_KEYS: [&str; 2] = ["kind", "lines_per_rev"];
 
 /// 1-based line of a byte offset in `text`.
@@ -52,7 +59,7 @@ impl Ctx<'_> {
     /// The item at `key` of `table` (path `path`), with the line of its key.
     fn get<'t>(
         &self,
-        table: &'t Table,
+        table: &'t dyn TableLike,
         key: &str,
     ) -> Option<(&'t Item, Option<std::ops::Range<usize>>)> {
         table
@@ -60,7 +67,7 @@ impl Ctx<'_> {
             .map(|(k, item)| (item, k.span().or_else(|| item.span())))
     }
 
-    fn allow(&self, table: &Table, path: &str, known: &[&str]) -> Result<(), RecordingError> {
+    fn allow(&self, table: &dyn TableLike, path: &str, known: &[&str]) -> Result<(), RecordingError> {
         for (key, _) in table.iter() {
             if !known.contains(&key) {
                 let span = table.key(key).and_then(|k| k.span());
@@ -75,7 +82,7 @@ impl Ctx<'_> {
         Ok(())
     }
 
-    fn number(&self, table: &Table, key: &str, path: &str) -> Result<Option<f64>, RecordingError> {
+    fn number(&self, table: &dyn TableLike, key: &str, path: &str) -> Result<Option<f64>, RecordingError> {
         let Some((item, span)) = self.get(table, key) else {
             return Ok(None);
         };
@@ -94,7 +101,7 @@ impl Ctx<'_> {
 
     fn string(
         &self,
-        table: &Table,
+        table: &dyn TableLike,
         key: &str,
         path: &str,
     ) -> Result<Option<String>, RecordingError> {
@@ -106,7 +113,7 @@ impl Ctx<'_> {
             .ok_or_else(|| self.err(path, span, Reason::BadValue("expected a string".into())))
     }
 
-    fn integer(&self, table: &Table, key: &str, path: &str) -> Result<Option<i64>, RecordingError> {
+    fn integer(&self, table: &dyn TableLike, key: &str, path: &str) -> Result<Option<i64>, RecordingError> {
         let Some((item, span)) = self.get(table, key) else {
             return Ok(None);
         };
@@ -115,7 +122,7 @@ impl Ctx<'_> {
             .ok_or_else(|| self.err(path, span, Reason::BadValue("expected an integer".into())))
     }
 
-    fn bad(&self, table: &Table, key: &str, message: String) -> RecordingError {
+    fn bad(&self, table: &dyn TableLike, key: &str, message: String) -> RecordingError {
         let span = self.get(table, key).and_then(|(_, s)| s);
         self.err(key, span, Reason::BadValue(message))
     }
@@ -168,6 +175,16 @@ pub fn parse_sidecar(text: &str, file: &str) -> Result<RecordingMeta, RecordingE
         return Err(cx.bad(root, "load", format!("{}: must be within 0 … 1", meta.load)));
     }
     meta.temperature_c = cx.number(root, "temperature_c", "temperature_c")?;
+    if let Some(t) = meta.temperature_c.filter(|t| !(ABSOLUTE_ZERO_C..=MAX_TEMPERATURE_C).contains(t)) {
+        return Err(cx.bad(
+            root,
+            "temperature_c",
+            format!(
+                "{t} °C: must be within {ABSOLUTE_ZERO_C} … {MAX_TEMPERATURE_C} °C (absolute zero to \
+                 above where any elastomer decomposes; a value outside is a unit mistake such as K or °F)"
+            ),
+        ));
+    }
     meta.label = cx.string(root, "label", "label")?;
     match cx.integer(root, "strokes", "strokes")? {
         None => {}
@@ -175,7 +192,8 @@ pub fn parse_sidecar(text: &str, file: &str) -> Result<RecordingMeta, RecordingE
         Some(s) => return Err(cx.bad(root, "strokes", format!("{s}: must be 2 or 4"))),
     }
     if let Some((item, span)) = cx.get(root, "sensors") {
-        let table = item.as_table().ok_or_else(|| {
+        // Inline tables are tables (issue 13): `sensors = { engine = { kind = … } }`.
+        let table = item.as_table_like().ok_or_else(|| {
             cx.err(
                 "sensors",
                 span.clone(),
@@ -187,12 +205,12 @@ pub fn parse_sidecar(text: &str, file: &str) -> Result<RecordingMeta, RecordingE
     Ok(meta)
 }
 
-fn sensors(cx: &Ctx, table: &Table) -> Result<BTreeMap<String, Sensor>, RecordingError> {
+fn sensors(cx: &Ctx, table: &dyn TableLike) -> Result<BTreeMap<String, Sensor>, RecordingError> {
     let mut out = BTreeMap::new();
     for (node, item) in table.iter() {
         let path = format!("sensors.{node}");
         let span = table.key(node).and_then(|k| k.span());
-        let t = item.as_table().ok_or_else(|| {
+        let t = item.as_table_like().ok_or_else(|| {
             cx.err(
                 &path,
                 span.clone(),
@@ -267,4 +285,12 @@ pub fn sidecar_string(meta: &RecordingMeta) -> String {
         }
     }
     out
+}
+
+/// 1-based line of a top-level `key` in a sidecar's text, when it is there (for errors
+/// found after parsing, such as a `speed_rpm` the data contradict).
+pub fn key_line(text: &str, key: &str) -> Option<usize> {
+    let doc = Document::parse(text).ok()?;
+    let span = doc.as_table().key(key)?.span()?;
+    Some(line_of(text, span.start))
 }

@@ -187,6 +187,10 @@ pub fn analyse_with(
     let ratio = |node: &str| options.shaft_ratio.get(node).copied().unwrap_or(1.0);
     let mut stations = Vec::with_capacity(stations_in.len());
     for (node, values) in &stations_in {
+        // Issue 13: no NaN in a report; say what cannot be computed and why.
+        if stats::mean(values) == 0.0 {
+            return Err(SignalError::StandingStation((*node).to_string()));
+        }
         stations.push(cx.signal(node, values, stats::mean(values))?);
     }
     let mut n_rel = Vec::new();

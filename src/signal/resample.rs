@@ -15,6 +15,7 @@
 
 use super::SignalError;
 use super::kernel::{self, HALF_WIDTH};
+use crate::recording::timing;
 
 /// Resampling points per revolution of the reference shaft: order 24 gets 10.7 points
 /// per period, a 4-stroke cycle 512 points (a power of two for the FFT).
@@ -70,22 +71,32 @@ impl AngleGrid {
     }
 }
 
-/// The sampling interval, s, when `time_s` is uniform to within 0.1 % of it.
+/// The sampling interval, s, of time stamps held in memory, judged by
+/// [`crate::recording::timing::judge`] like the reader's (one rule for the reader, the
+/// analysis, the GUI and the diagnosis): within 0.1 % of a step of the fitted grid.
+/// Jittered samples must be resampled first (the reader does it).
 pub fn uniform_interval(time_s: &[f64]) -> Result<f64, SignalError> {
     let n = time_s.len();
-    if n < 2 {
-        return Err(SignalError::TooShort { cycles: 0.0 });
+    let timing = timing::judge(time_s, None).map_err(|fault| match fault.index() {
+        Some(k) => SignalError::NonUniform(format!("sample {k} (0-based): {fault}")),
+        None => SignalError::TooFewSamples {
+            samples: n,
+            needed: 2 * HALF_WIDTH + 2,
+            margin: HALF_WIDTH,
+        },
+    })?;
+    if !timing.is_uniform() {
+        return Err(SignalError::NonUniform(format!(
+            "time stamps scatter by up to {:.3e} s, {:.2} % of the {:.6e} s step (more than \
+             {} %): resample them onto the fitted grid (recording::timing::regularize, as \
+             the reader does)",
+            timing.max_residual_s,
+            100.0 * timing.max_residual_s / timing.dt_s,
+            timing.dt_s,
+            100.0 * timing::IN_MEMORY_TOLERANCE_STEPS
+        )));
     }
-    let dt = (time_s[n - 1] - time_s[0]) / (n - 1) as f64;
-    for (k, &t) in time_s.iter().enumerate() {
-        if (t - time_s[0] - k as f64 * dt).abs() > 1e-3 * dt {
-            return Err(SignalError::NonUniform {
-                time_s: t,
-                dt_s: dt,
-            });
-        }
-    }
-    Ok(dt)
+    Ok(timing.dt_s)
 }
 
 /// Reference angle at each sample, rev (0 at the first), from the speed in rpm.
@@ -109,26 +120,44 @@ pub fn angle_grid(
     samples_per_rev: usize,
     cycle_rev: f64,
 ) -> Result<AngleGrid, SignalError> {
-    let dt = uniform_interval(time_s)?;
-    if let Some(k) = reference_rpm.iter().position(|&n| n <= 0.0 || n.is_nan()) {
-        return Err(SignalError::NonPositiveSpeed { time_s: time_s[k] });
-    }
     let n = time_s.len();
     if n < 2 * HALF_WIDTH + 2 {
-        return Err(SignalError::TooShort { cycles: 0.0 });
+        return Err(SignalError::TooFewSamples {
+            samples: n,
+            needed: 2 * HALF_WIDTH + 2,
+            margin: HALF_WIDTH,
+        });
+    }
+    let dt = uniform_interval(time_s)?;
+    if let Some(k) = reference_rpm.iter().position(|&n| !(n > 0.0 && n.is_finite())) {
+        return Err(SignalError::NonPositiveSpeed { time_s: time_s[k] });
     }
     let theta = reference_angle_rev(reference_rpm, dt);
     let (lo, hi) = (theta[HALF_WIDTH], theta[n - 1 - HALF_WIDTH]);
+    let samples_per_cycle = (samples_per_rev as f64 * cycle_rev).round() as usize;
+    // Bounded before allocating (issue 13): one over-range speed sample must not ask for
+    // terabytes. Checked on the angle itself, which is finite or not, before any cast.
+    let limit = crate::limits::current().max_grid_points;
+    let points = (hi - lo) * samples_per_rev as f64;
+    if !(points <= limit as f64) {
+        return Err(SignalError::GridTooLarge {
+            points,
+            limit,
+            revolutions: hi - lo,
+            samples_per_rev,
+        });
+    }
     let first_cycle = (lo / cycle_rev).ceil();
     let start_rev = first_cycle * cycle_rev;
     let cycles_f = ((hi - start_rev) / cycle_rev).floor();
     if cycles_f < 1.0 {
         return Err(SignalError::TooShort {
             cycles: ((hi - lo) / cycle_rev).max(0.0),
+            needed: (start_rev + cycle_rev - lo) / cycle_rev,
+            margin: HALF_WIDTH,
         });
     }
     let cycles = cycles_f as usize;
-    let samples_per_cycle = (samples_per_rev as f64 * cycle_rev).round() as usize;
     let total = cycles * samples_per_cycle;
     let mut positions = Vec::with_capacity(total);
     let mut k = HALF_WIDTH;
