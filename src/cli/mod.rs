@@ -10,6 +10,8 @@ mod diagnose;
 pub mod error;
 mod format;
 mod input;
+// Only the window opens a model by this name; a build without it has no caller.
+#[cfg_attr(not(feature = "gui"), allow(unused_imports))]
 pub use input::load_model;
 mod modes;
 mod progress;
