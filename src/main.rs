@@ -2,7 +2,21 @@
 //! (1: failed check or analysis, 2: bad input or usage).
 
 mod cli;
+#[cfg(feature = "gui")]
 mod gui;
+
+/// A build without the `gui` feature (issue 13, deliverable 5): no window to open.
+#[cfg(not(feature = "gui"))]
+mod gui {
+    use crate::cli::error::CliError;
+
+    /// No subcommand: a usage error (exit 2), since there is no window in this build.
+    pub fn run(_model: Option<String>) -> Result<(), CliError> {
+        Err(CliError::input(anyhow::anyhow!(
+            "this torsim was built without the `gui` feature; name a command (see `torsim --help`)"
+        )))
+    }
+}
 
 use clap::Parser;
 use std::process::ExitCode;

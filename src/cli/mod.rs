@@ -11,6 +11,8 @@ pub mod error;
 mod format;
 mod input;
 mod json_guard;
+// Only the window opens a model by this name; a build without it has no caller.
+#[cfg_attr(not(feature = "gui"), allow(unused_imports))]
 pub use input::load_model;
 mod modes;
 mod progress;
