@@ -388,3 +388,50 @@ fn rubber_temperatures_outside_the_law_are_refused() {
     fails(&t, "connection[1].thermal.ambient_c", "thermal", "400 °C is outside");
     parse_model(&with(&format!("{RUBBER}temperature_c = -40.0\n")), "t").expect("−40 °C");
 }
+
+/// `a —gear— g —shaft— b`: the gear's ratio and the shaft's stiffness in round-off.
+const GEARED: &str = r#"format = 1
+name = "t"
+[[inertia]]
+name = "a"
+inertia = 1.0
+[[inertia]]
+name = "g"
+inertia = 1.0
+[[inertia]]
+name = "b"
+inertia = 2.0
+[[connection]]
+kind = "gear"
+from = "a"
+to = "g"
+ratio = 0.5
+mesh_stiffness = 1e6
+[[connection]]
+kind = "shaft"
+from = "g"
+to = "b"
+stiffness = 1000.0
+"#;
+
+#[test]
+fn magnitudes_that_make_the_system_singular_are_refused_at_their_key() {
+    parse_model(GEARED, "t").expect("valid");
+    for ratio in ["1e-300", "1e-5", "2e4", "-1e5"] {
+        let t = replaced(GEARED, "ratio = 0.5", &format!("ratio = {ratio}"));
+        fails(&t, "connection[0].ratio", "ratio", "magnitude from 1e-4 to 1e4");
+    }
+    parse_model(&replaced(GEARED, "ratio = 0.5", "ratio = -1e4"), "t").expect("1:10 000");
+    let t = replaced(GEARED, "stiffness = 1000.0", "stiffness = 1e-308");
+    fails(
+        &t,
+        "connection[1].stiffness",
+        "stiffness = 1e-308",
+        "below 1e-12 of the largest, connection `a-g`'s",
+    );
+    // Referred (× 0.25 both): 1e-3 N·m/rad is 4e-9 of the mesh's 1e6, above round-off.
+    let t = replaced(GEARED, "stiffness = 1000.0", "stiffness = 1e-3");
+    parse_model(&t, "t").expect("4e-9 of the mesh");
+    let t = replaced(GEARED, "inertia = 2.0", "inertia = 1e-20");
+    fails(&t, "inertia[2].inertia", "1e-20", "inertia of node `b`");
+}

@@ -17,6 +17,7 @@ mod spanned;
 pub mod types;
 pub mod validate;
 mod validate_engine;
+pub mod validate_scale;
 pub mod write;
 
 pub use engine_types::*;

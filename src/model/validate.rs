@@ -10,6 +10,7 @@ use super::error::ModelError;
 use super::graph;
 use super::names::check_name;
 use super::validate_engine;
+use super::validate_scale;
 use super::{ConnectionKind, GROUND, Model, Poly, RubberStage, RubberStiffness};
 
 /// Result of one check.
@@ -106,7 +107,8 @@ pub fn validate(model: &Model) -> Result<(), ModelError> {
             )?;
         }
     }
-    graph::speed_ratios(model)?;
+    let ratios = graph::speed_ratios(model)?;
+    validate_scale::magnitudes(model, &ratios)?;
     if let Some(engine) = &model.engine {
         validate_engine::engine(model, engine)?;
     }
@@ -180,12 +182,7 @@ fn connections(model: &Model) -> Check {
                 if c.from == GROUND || c.to == GROUND {
                     fail(k(end), "a gear cannot connect to `ground`")?;
                 }
-                if !g.ratio.is_finite() || g.ratio == 0.0 {
-                    fail(
-                        k("ratio"),
-                        format!("must be finite and non-zero, found {}", g.ratio),
-                    )?;
-                }
+                validate_scale::gear_ratio(&k("ratio"), g.ratio)?;
                 if let Some(mesh) = g.mesh_stiffness_nm_per_rad {
                     positive(&k("mesh_stiffness"), mesh)?;
                 }
