@@ -231,7 +231,10 @@ pub fn parse_recording_with(
             timing.dt_s * 1e6
         ));
         time_s = grid;
-    } else {
+    } else if timing.max_residual_s > timing::IN_MEMORY_TOLERANCE_STEPS * timing.dt_s {
+        // Uniform, but printed coarser than the analysis' 0.1 % of a step: the fitted
+        // grid is the clock. Finer time stamps are kept as written (round trips are
+        // bit-exact).
         time_s = (0..time_s.len())
             .map(|k| timing.t0_s + k as f64 * timing.dt_s)
             .collect();
