@@ -4,13 +4,15 @@
 //! [`write_recording`] writes one atomically (the simulator's `--csv`).
 
 pub mod error;
+pub mod integrity;
 pub mod read;
 pub mod sidecar;
 pub mod types;
 pub mod write;
 
 pub use error::{Reason, RecordingError};
+pub use integrity::CsvCheck;
 pub use read::{parse_recording, read_recording, sidecar_path};
-pub use sidecar::{parse_sidecar, sidecar_string};
+pub use sidecar::{parse_csv_check, parse_sidecar, sidecar_string, sidecar_text};
 pub use types::*;
-pub use write::{check_recording, csv_string, write_recording};
+pub use write::{check_recording, csv_string, prepare_recording, write_recording};

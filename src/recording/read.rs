@@ -7,7 +7,8 @@
 use std::path::Path;
 
 use super::error::{Reason, RecordingError};
-use super::sidecar::parse_sidecar;
+use super::integrity::verify;
+use super::sidecar::{parse_csv_check, parse_sidecar};
 use super::types::{Channel, ChannelKind, Recording, RecordingMeta, revolutions};
 
 /// The sidecar path of a CSV: same stem, `.toml`.
@@ -19,7 +20,8 @@ pub fn sidecar_path(csv_path: &Path) -> std::path::PathBuf {
 ///
 /// With `node_names` (the model's nodes), every `<node>_rpm` and `<node>_rad` column must
 /// name one of them. The reference shaft must turn through at least two working cycles
-/// (`strokes` revolutions).
+/// (`strokes` revolutions). When the sidecar records the CSV's fingerprint (`csv_sha256`,
+/// `csv_rows`), a CSV that does not match it is refused, naming both files.
 pub fn read_recording(
     csv_path: &Path,
     node_names: Option<&[String]>,
@@ -33,9 +35,14 @@ pub fn read_recording(
         )
     })?;
     let meta = parse_sidecar(&toml_text, &toml_file)?;
+    let check = parse_csv_check(&toml_text, &toml_file)?;
     let csv_file = csv_path.display().to_string();
     let csv_text = std::fs::read_to_string(csv_path)
         .map_err(|e| RecordingError::new(&csv_file, Reason::Io(format!("cannot read: {e}"))))?;
+    // Issue 13: a pair whose CSV is not the one its sidecar was written with is refused.
+    if let Some(check) = &check {
+        verify(check, csv_text.as_bytes(), &csv_file, &toml_file)?;
+    }
     parse_recording(&csv_text, &csv_file, meta, node_names)
 }
 
