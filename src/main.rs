@@ -1,5 +1,6 @@
 //! The `torsim` binary: parses the command line, runs it, maps errors to exit codes
-//! (1: failed check or analysis, 2: bad input or usage).
+//! (1: failed check or analysis, 2: bad input or usage; 130 and 143 after SIGINT and
+//! SIGTERM).
 
 mod cli;
 #[cfg(feature = "gui")]
@@ -21,8 +22,32 @@ mod gui {
 use clap::Parser;
 use std::process::ExitCode;
 
+/// On SIGINT or SIGTERM: removes the temporary files in progress and exits 128 + the
+/// signal's number (130, 143), so that no `.tmp` file is left and every target is either
+/// as it was or complete (issue 13). The library installs no handler; it keeps the
+/// registry ([`torsim::files::remove_temporaries`]).
+fn install_signal_handler() {
+    #[cfg(unix)]
+    {
+        use signal_hook::consts::{SIGINT, SIGTERM};
+        // Without the handler a signal still ends the process, leaving a temporary file.
+        let Ok(mut signals) = signal_hook::iterator::Signals::new([SIGINT, SIGTERM]) else {
+            return;
+        };
+        let _ = std::thread::Builder::new()
+            .name("torsim-signals".into())
+            .spawn(move || {
+                if let Some(signal) = signals.forever().next() {
+                    torsim::files::remove_temporaries();
+                    std::process::exit(128 + signal);
+                }
+            });
+    }
+}
+
 fn main() -> ExitCode {
     let cli = cli::Cli::parse();
+    install_signal_handler();
     match cli::run(cli) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {

@@ -2,15 +2,27 @@
 
 use super::error::CliError;
 use super::format::{emit, number, numbers, order_key, outln, print_json, print_warnings, table};
+use super::input::PRESET_PREFIX;
 use super::input::Sweep;
 use serde_json::{Value, json};
-use std::io::Write;
+use std::path::Path;
+use torsim::files::OutputGuard;
 use torsim::modal::campbell;
 use torsim::physics::{OperatingPoint, System};
 
 /// Runs the command.
 pub fn run(sweep: &Sweep, csv: Option<&str>, json: bool) -> Result<(), CliError> {
     let (model, speeds, load) = sweep.resolve()?;
+    // Issue 13: an output never replaces the model.
+    if let Some(path) = csv {
+        let mut guard = OutputGuard::new();
+        if !sweep.model.starts_with(PRESET_PREFIX) {
+            guard.input("the model", Path::new(&sweep.model));
+        }
+        guard
+            .output("--csv", Path::new(path))
+            .map_err(CliError::input)?;
+    }
     let system = System::new(
         &model,
         OperatingPoint {
@@ -25,9 +37,7 @@ pub fn run(sweep: &Sweep, csv: Option<&str>, json: bool) -> Result<(), CliError>
     print_warnings(&system.frequency_range_warnings(&frequencies));
     let operating = model.operation.operating_range_rpm;
     let in_operating = |rpm: f64| operating.is_some_and(|[lo, hi]| rpm >= lo && rpm <= hi);
-    if let Some(path) = csv {
-        write_csv(path, &diagram)?;
-    }
+    let write = || csv.map_or(Ok(()), |path| write_csv(path, &diagram));
     if json {
         let modes = diagram
             .frequency_hz
@@ -48,13 +58,15 @@ pub fn run(sweep: &Sweep, csv: Option<&str>, json: bool) -> Result<(), CliError>
                 }))
             })
             .collect::<Result<Vec<Value>, CliError>>()?;
-        return print_json(&json!({
+        let doc = json!({
             "speeds_rpm": numbers(&speeds, "speed")?,
             "orders": numbers(&orders, "order")?,
             "operating_range_rpm": operating,
             "modes": modes,
             "crossings": crossings,
-        }));
+        });
+        write()?;
+        return print_json(&doc);
     }
     let mut text = String::new();
     outln!(
@@ -92,10 +104,12 @@ pub fn run(sweep: &Sweep, csv: Option<&str>, json: bool) -> Result<(), CliError>
         &["order", "mode", "rpm", "f [Hz]", ""].map(String::from),
         &rows,
     );
+    write()?;
     emit(&text)
 }
 
-/// Writes the diagram: one row per speed, each mode's frequency and each order line.
+/// Writes the diagram atomically: one row per speed, each mode's frequency and each
+/// order line.
 fn write_csv(path: &str, d: &torsim::modal::Campbell) -> Result<(), CliError> {
     let mut text = String::from("speed_rpm");
     for i in 0..d.frequency_hz.len() {
@@ -115,8 +129,6 @@ fn write_csv(path: &str, d: &torsim::modal::Campbell) -> Result<(), CliError> {
         }
         text.push('\n');
     }
-    let mut file = std::fs::File::create(path)
-        .map_err(|e| CliError::input(anyhow::anyhow!("{path}: cannot write: {e}")))?;
-    file.write_all(text.as_bytes())
-        .map_err(|e| CliError::input(anyhow::anyhow!("{path}: cannot write: {e}")))
+    torsim::files::write_atomic(Path::new(path), text)
+        .map_err(|e| CliError::input(anyhow::anyhow!("--csv {path}: cannot write: {e}")))
 }

@@ -8,13 +8,14 @@
 
 use super::error::CliError;
 use super::format::{emit, outln, print_json, table};
-use super::input::load_model;
+use super::input::{PRESET_PREFIX, load_model};
 use super::progress::Progress;
 use std::path::{Path, PathBuf};
 use torsim::diagnose::report::ParameterValue;
 use torsim::diagnose::{
     DiagnoseError, DiagnoseOptions, LabelledRecording, Report, diagnose, report_html,
 };
+use torsim::files::OutputGuard;
 use torsim::recording::read_recording;
 
 /// Options of the command.
@@ -123,9 +124,27 @@ fn write_atomic(path: &Path, text: &str) -> Result<(), CliError> {
         .map_err(|e| CliError::input(anyhow::anyhow!("{}: cannot write: {e}", path.display())))
 }
 
+/// Issue 13: `--report` never replaces the model, a recording or its sidecar.
+fn guard_report(a: &DiagnoseArgs) -> Result<(), CliError> {
+    let Some(report) = &a.report else {
+        return Ok(());
+    };
+    let mut guard = OutputGuard::new();
+    if !a.model.starts_with(PRESET_PREFIX) {
+        guard.input("the model", Path::new(&a.model));
+    }
+    for recording in &a.recordings {
+        guard.recording_input(Path::new(recording));
+    }
+    guard
+        .output("--report", Path::new(report))
+        .map_err(CliError::input)
+}
+
 /// Runs the command.
 pub fn run(a: &DiagnoseArgs) -> Result<(), CliError> {
     let model = load_model(&a.model)?;
+    guard_report(a)?;
     let options = options(a)?;
     let nodes: Vec<String> = model.inertias.iter().map(|i| i.name.clone()).collect();
     let recordings = read_all(&a.recordings, &nodes)?;
@@ -141,11 +160,20 @@ pub fn run(a: &DiagnoseArgs) -> Result<(), CliError> {
         .map(|(r, path)| (r.label.clone(), path.clone()))
         .collect();
     let report = result.map_err(|e| cli_error(e, &files))?;
+    // Everything that can fail comes before the page is written (issue 13).
+    let doc = match a.json {
+        true => {
+            let doc = serde_json::to_value(&report).map_err(CliError::failed)?;
+            super::json_guard::check(&doc).map_err(|e| CliError::failed(anyhow::anyhow!(e)))?;
+            Some(doc)
+        }
+        false => None,
+    };
     if let Some(path) = &a.report {
         write_atomic(Path::new(path), &report_html(&report, &model.name))?;
     }
-    if a.json {
-        return print_json(&serde_json::to_value(&report).map_err(CliError::failed)?);
+    if let Some(doc) = doc {
+        return print_json(&doc);
     }
     let mut text = summary(&report, &model.name);
     if let Some(path) = &a.report {

@@ -5,11 +5,13 @@
 use super::analyse::{print_analysis, to_json};
 use super::error::CliError;
 use super::format::{number, print_warnings};
+use super::input::PRESET_PREFIX;
 use super::input::{check_load, load_model};
 use super::progress::Progress;
 use serde_json::{Map, Value, json};
 use std::path::Path;
-use torsim::recording::write_recording;
+use torsim::files::{OutputGuard, PreparedPair};
+use torsim::recording::prepare_recording;
 use torsim::signal::{AnalysisOptions, analyse_with};
 use torsim::transient::{Method, RunKind, RunOptions, simulate, to_recording};
 
@@ -93,6 +95,16 @@ fn run_kind(a: &SimulateArgs) -> Result<RunKind, CliError> {
 /// Runs the command.
 pub fn run(a: &SimulateArgs) -> Result<(), CliError> {
     let model = load_model(&a.model)?;
+    // Issue 13: refuse an output that would replace the model before running anything.
+    if let Some(path) = &a.csv {
+        let mut guard = OutputGuard::new();
+        if !a.model.starts_with(PRESET_PREFIX) {
+            guard.input("the model", Path::new(&a.model));
+        }
+        guard
+            .recording_output("--csv", Path::new(path))
+            .map_err(CliError::input)?;
+    }
     let kind = run_kind(a)?;
     let method = match a.method {
         MethodArg::Auto => Method::Auto,
@@ -141,9 +153,14 @@ pub fn run(a: &SimulateArgs) -> Result<(), CliError> {
     }
     print_warnings(&warnings);
     let recording = to_recording(&sim, kind, options.load, model.strokes(), &model.name);
-    if let Some(path) = &a.csv {
-        write_recording(&recording, Path::new(path)).map_err(CliError::input)?;
-    }
+    // The temporaries are written now (a recording with NaN is refused before any file),
+    // renamed only once the analysis below succeeded (issue 13).
+    let pending = match &a.csv {
+        Some(path) => {
+            Some(prepare_recording(&recording, Path::new(path)).map_err(CliError::input)?)
+        }
+        None => None,
+    };
     let mut analysis_options = AnalysisOptions::default();
     for (node, ratio) in sim.node_names.iter().zip(&sim.speed_ratio) {
         analysis_options
@@ -161,6 +178,12 @@ pub fn run(a: &SimulateArgs) -> Result<(), CliError> {
             .collect(),
     );
     let analysis = analyse_with(&recording, &analysis_options).map_err(CliError::failed)?;
+    // The files are renamed once everything that can fail has succeeded; dropping
+    // `pending` on an early return removes its temporaries.
+    let commit = |pending: Option<PreparedPair>| match pending {
+        Some(p) => p.commit().map_err(CliError::input),
+        None => Ok(()),
+    };
     if a.json {
         let mut doc = to_json(&analysis)?;
         if let Value::Object(map) = &mut doc {
@@ -183,6 +206,7 @@ pub fn run(a: &SimulateArgs) -> Result<(), CliError> {
                 json!({"accepted": sim.steps.0, "rejected": sim.steps.1}),
             );
         }
+        commit(pending)?;
         return super::format::print_json(&doc);
     }
     let label = match kind {
@@ -205,5 +229,6 @@ pub fn run(a: &SimulateArgs) -> Result<(), CliError> {
             extra += &format!("power loss `{}`: {w:.3} W\n", sim.connection_names[*c]);
         }
     }
+    commit(pending)?;
     print_analysis(&label, &analysis, &extra)
 }

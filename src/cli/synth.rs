@@ -11,6 +11,7 @@ use super::input::{PRESET_PREFIX, load_model};
 use super::progress::Progress;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
+use torsim::files::{OutputGuard, same_file, write_atomic};
 use torsim::model::{presets, save_model_file};
 use torsim::recording::write_recording;
 use torsim::synth::{
@@ -173,29 +174,18 @@ pub fn run(a: &SynthArgs) -> Result<(), CliError> {
         resolution_rpm: a.resolution_rpm,
     };
     let truth = build_truth(&user, &spec, a.param_error_pct, a.seed).map_err(cli_error)?;
+    let out = PathBuf::from(&a.out);
+    let copy_model = guard_outputs(a, &plan, &out)?;
     let progress = Progress::new("synth");
     let result = generate(&truth, &plan, &measurement, &mut |f| progress.set(f));
     progress.finish();
     let recordings = result.map_err(cli_error)?;
 
-    let out = PathBuf::from(&a.out);
     std::fs::create_dir_all(&out)
         .map_err(|e| CliError::input(anyhow::anyhow!("{}: cannot create: {e}", a.out)))?;
-    let model_path = out.join("model.toml");
-    let same = match (
-        std::fs::canonicalize(&a.model),
-        std::fs::canonicalize(&model_path),
-    ) {
-        (Ok(x), Ok(y)) => x == y,
-        _ => false,
-    };
-    if !same {
-        std::fs::write(&model_path, &text).map_err(|e| {
-            CliError::input(anyhow::anyhow!(
-                "{}: cannot write: {e}",
-                model_path.display()
-            ))
-        })?;
+    let model_path = out.join(MODEL_FILE);
+    if copy_model {
+        write_file(&model_path, &text)?;
     }
     let mut bytes = 0;
     let mut lines = String::new();
@@ -228,12 +218,7 @@ pub fn run(a: &SynthArgs) -> Result<(), CliError> {
         &command_line(),
     );
     let truth_path = out.join(TRUTH_FILE);
-    std::fs::write(&truth_path, truth_text).map_err(|e| {
-        CliError::input(anyhow::anyhow!(
-            "{}: cannot write: {e}",
-            truth_path.display()
-        ))
-    })?;
+    write_file(&truth_path, &truth_text)?;
     save_model_file(&truth.model, &out.join(TRUTH_MODEL_FILE))?;
     emit(&format!(
         "wrote {} recordings to {} ({:.2} MB of CSV and sidecars) in {:.1} s:\n{lines}\
@@ -246,6 +231,44 @@ pub fn run(a: &SynthArgs) -> Result<(), CliError> {
         out.join(TRUTH_MODEL_FILE).display(),
         truth.effect.effect,
     ))
+}
+
+/// The copy of the user's model in `--out`.
+const MODEL_FILE: &str = "model.toml";
+
+/// Issue 13: no file `--out` gets may replace an input (the model, the plan) or another
+/// output. Returns whether the model is to be copied: not when `--out`'s `model.toml` is
+/// the model itself (it would be rewritten with its own text).
+fn guard_outputs(a: &SynthArgs, plan: &Plan, out: &Path) -> Result<bool, CliError> {
+    let mut guard = OutputGuard::new();
+    let mut copy_model = true;
+    if !a.model.starts_with(PRESET_PREFIX) {
+        guard.input("the model", Path::new(&a.model));
+        copy_model = !same_file(Path::new(&a.model), &out.join(MODEL_FILE));
+    }
+    if let Some(path) = &a.plan {
+        guard.input("the plan", Path::new(path));
+    }
+    let refuse = CliError::input;
+    if copy_model {
+        guard
+            .output("--out", &out.join(MODEL_FILE))
+            .map_err(refuse)?;
+    }
+    for run in &plan.runs {
+        let csv = out.join(format!("{}.csv", run.file));
+        guard.recording_output("--out", &csv).map_err(refuse)?;
+    }
+    for name in [TRUTH_FILE, TRUTH_MODEL_FILE] {
+        guard.output("--out", &out.join(name)).map_err(refuse)?;
+    }
+    Ok(copy_model)
+}
+
+/// Writes `text` to `path` atomically.
+fn write_file(path: &Path, text: &str) -> Result<(), CliError> {
+    write_atomic(path, text)
+        .map_err(|e| CliError::input(anyhow::anyhow!("{}: cannot write: {e}", path.display())))
 }
 
 fn file_size(path: &Path) -> u64 {

@@ -5,6 +5,7 @@
 
 pub mod bad_samples;
 pub mod error;
+pub mod integrity;
 pub mod read;
 pub mod sidecar;
 pub mod table;
@@ -14,10 +15,11 @@ pub mod write;
 
 pub use error::{Reason, RecordingError};
 pub use bad_samples::BadSamples;
+pub use integrity::CsvCheck;
 pub use read::{
     ReadOptions, ReadOutcome, parse_recording, parse_recording_with, read_recording,
     read_recording_with, sidecar_path,
 };
-pub use sidecar::{parse_sidecar, sidecar_string};
+pub use sidecar::{parse_csv_check, parse_sidecar, sidecar_string, sidecar_text};
 pub use types::*;
-pub use write::{check_recording, csv_string, write_recording};
+pub use write::{check_recording, csv_string, prepare_recording, write_recording};

@@ -12,7 +12,8 @@ use std::path::Path;
 
 use super::bad_samples::{self, BadSamples};
 use super::error::{Reason, RecordingError};
-use super::sidecar::{key_line, parse_sidecar};
+use super::integrity::verify;
+use super::sidecar::{key_line, parse_csv_check, parse_sidecar};
 use super::table::{Table, parse_table};
 use super::timing::{self, TimingFault};
 use super::types::{Channel, Recording, RecordingMeta, RunKind, revolutions};
@@ -57,7 +58,9 @@ pub fn read_recording(
 /// With `node_names` (the model's nodes), every `<node>_rpm` and `<node>_rad` column must
 /// name one of them. The reference shaft must turn through at least two working cycles
 /// (`strokes` revolutions), and a steady run's mean reference speed must be within
-/// [`SPEED_TOLERANCE_PCT`] of the sidecar's `speed_rpm`.
+/// [`SPEED_TOLERANCE_PCT`] of the sidecar's `speed_rpm`. When the sidecar records the
+/// CSV's fingerprint (`csv_sha256`, `csv_rows`), a CSV that does not match it is refused,
+/// naming both files.
 pub fn read_recording_with(
     csv_path: &Path,
     node_names: Option<&[String]>,
@@ -69,6 +72,10 @@ pub fn read_recording_with(
     let toml_file = toml_path.display().to_string();
     let toml_text = read_text(&toml_path, &toml_file, "cannot read the sidecar")?;
     let meta = parse_sidecar(&toml_text, &toml_file)?;
+    // Issue 13: a pair whose CSV is not the one its sidecar was written with is refused.
+    if let Some(check) = parse_csv_check(&toml_text, &toml_file)? {
+        verify(&check, csv_text.as_bytes(), &csv_file, &toml_file)?;
+    }
     let outcome = parse_recording_with(&csv_text, &csv_file, meta, node_names, options)?;
     check_speed(&outcome.recording, &csv_file, &toml_file, &toml_text)?;
     Ok(outcome)

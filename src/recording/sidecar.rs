@@ -6,9 +6,10 @@ use std::collections::BTreeMap;
 use toml_edit::{Document, Item, TableLike};
 
 use super::error::{Reason, RecordingError};
+use super::integrity::CsvCheck;
 use super::types::{RecordingMeta, RunKind, Sensor};
 
-const KEYS: [&str; 9] = [
+const KEYS: [&str; 11] = [
     "format",
     "kind",
     "reference",
@@ -18,6 +19,8 @@ const KEYS: [&str; 9] = [
     "label",
     "strokes",
     "sensors",
+    "csv_sha256",
+    "csv_rows",
 ];
 /// Absolute zero, °C: no temperature is below it (issue 13).
 pub const ABSOLUTE_ZERO_C: f64 = -273.15;
@@ -205,6 +208,36 @@ pub fn parse_sidecar(text: &str, file: &str) -> Result<RecordingMeta, RecordingE
     Ok(meta)
 }
 
+/// The CSV's fingerprint recorded in a sidecar (`csv_sha256` and `csv_rows`, written
+/// together by [`sidecar_text`]); `None` when the sidecar has neither (a bench's own).
+/// Errors name the key and its line.
+pub fn parse_csv_check(text: &str, file: &str) -> Result<Option<CsvCheck>, RecordingError> {
+    let cx = Ctx { text, file };
+    let doc = Document::parse(text).map_err(|e| {
+        let err = RecordingError::new(file, Reason::Toml(e.message().trim().to_string()));
+        match e.span() {
+            Some(s) => err.at_line(line_of(text, s.start)),
+            None => err,
+        }
+    })?;
+    let root = doc.as_table();
+    let sha256 = cx.string(root, "csv_sha256", "csv_sha256")?;
+    let rows = cx.integer(root, "csv_rows", "csv_rows")?;
+    match (sha256, rows) {
+        (None, None) => Ok(None),
+        (Some(sha256), Some(rows)) => {
+            if !CsvCheck::valid_hash(&sha256) {
+                return Err(cx.bad(root, "csv_sha256", "expected 64 hex digits".into()));
+            }
+            let rows = u64::try_from(rows)
+                .map_err(|_| cx.bad(root, "csv_rows", format!("{rows}: must be ≥ 0")))?;
+            Ok(Some(CsvCheck { sha256, rows }))
+        }
+        (Some(_), None) => Err(RecordingError::new(file, Reason::MissingKey).at_key("csv_rows")),
+        (None, Some(_)) => Err(RecordingError::new(file, Reason::MissingKey).at_key("csv_sha256")),
+    }
+}
+
 fn sensors(cx: &Ctx, table: &dyn TableLike) -> Result<BTreeMap<String, Sensor>, RecordingError> {
     let mut out = BTreeMap::new();
     for (node, item) in table.iter() {
@@ -246,6 +279,12 @@ fn sensors(cx: &Ctx, table: &dyn TableLike) -> Result<BTreeMap<String, Sensor>, 
 /// The sidecar as TOML text; keys equal to their defaults are left out, numbers in
 /// Rust's shortest round-trip form.
 pub fn sidecar_string(meta: &RecordingMeta) -> String {
+    sidecar_text(meta, None)
+}
+
+/// The sidecar as TOML text with the CSV's fingerprint (`csv_sha256`, `csv_rows`) when
+/// given; see [`sidecar_string`].
+pub fn sidecar_text(meta: &RecordingMeta, check: Option<&CsvCheck>) -> String {
     let s = |x: &str| toml_edit::Value::from(x).to_string();
     let mut out = format!(
         "format = 1\nkind = {}\nreference = {}\n",
@@ -273,6 +312,13 @@ pub fn sidecar_string(meta: &RecordingMeta) -> String {
     }
     if meta.strokes != 4 {
         out += &format!("strokes = {}\n", meta.strokes);
+    }
+    if let Some(check) = check {
+        out += &format!(
+            "csv_sha256 = {}\ncsv_rows = {}\n",
+            s(&check.sha256),
+            check.rows
+        );
     }
     for (node, sensor) in &meta.sensors {
         out += &format!(

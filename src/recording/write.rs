@@ -1,14 +1,17 @@
 //! Writing recordings: the CSV and its sidecar, each atomically (a temporary file in the
-//! same directory, renamed over the target once complete). Numbers are written in Rust's
+//! same directory, renamed over the target once complete), the pair in stages
+//! ([`prepare_recording`]). Numbers are written in Rust's
 //! shortest round-trip form, so [`read_recording`](super::read_recording) reads them back
 //! bit-identical; non-finite samples are refused (an output file never holds NaN).
 
 use std::path::Path;
 
 use super::error::{Reason, RecordingError};
+use super::integrity::CsvCheck;
 use super::read::sidecar_path;
-use super::sidecar::sidecar_string;
+use super::sidecar::sidecar_text;
 use super::types::Recording;
+use crate::files::pair::{PairError, PreparedPair};
 
 /// Checks that every channel has one finite sample per time stamp and that time
 /// increases; the error names the column and the 1-based CSV line (header = line 1).
@@ -67,21 +70,42 @@ pub fn csv_string(recording: &Recording) -> String {
     out
 }
 
-/// Writes `text` to `path` atomically.
-fn write_atomic(path: &Path, text: &str) -> Result<(), RecordingError> {
-    crate::files::write_atomic(path, text).map_err(|e| {
-        RecordingError::new(
-            path.display().to_string(),
-            Reason::Io(format!("cannot write: {e}")),
-        )
-    })
+/// Checks the recording and writes the temporaries of its CSV and sidecar (same stem,
+/// `.toml`) without touching either target: the first stage of [`write_recording`]. The
+/// sidecar records the CSV's SHA-256 and row count (`csv_sha256`, `csv_rows`), so a pair
+/// left half-renamed is refused by [`read_recording`](super::read_recording). Commit with
+/// [`PreparedPair::commit`] (or its two stages); dropping it removes both temporaries.
+pub fn prepare_recording(
+    recording: &Recording,
+    csv_path: &Path,
+) -> Result<PreparedPair, RecordingError> {
+    check_recording(recording, &csv_path.display().to_string())?;
+    let csv = csv_string(recording);
+    let check = CsvCheck::of(csv.as_bytes());
+    let sidecar = sidecar_text(&recording.meta, Some(&check));
+    PreparedPair::prepare(
+        csv_path,
+        csv.as_bytes(),
+        &sidecar_path(csv_path),
+        sidecar.as_bytes(),
+    )
+    .map_err(pair_error)
 }
 
-/// Writes the recording to `csv_path` and its sidecar beside it (same stem, `.toml`),
-/// each atomically. Refuses channels of the wrong length, non-finite samples and time
-/// that does not increase, before writing anything.
+fn pair_error(e: PairError) -> RecordingError {
+    RecordingError::new(
+        e.path.display().to_string(),
+        Reason::Io(format!("cannot write: {}", e.source)),
+    )
+}
+
+/// Writes the recording to `csv_path` and its sidecar beside it (same stem, `.toml`).
+/// Refuses channels of the wrong length, non-finite samples and time that does not
+/// increase, before writing anything. Both files go to temporaries first; if either
+/// cannot be written neither target is touched. Then the CSV is renamed, then the sidecar
+/// (issue 13).
 pub fn write_recording(recording: &Recording, csv_path: &Path) -> Result<(), RecordingError> {
-    check_recording(recording, &csv_path.display().to_string())?;
-    write_atomic(csv_path, &csv_string(recording))?;
-    write_atomic(&sidecar_path(csv_path), &sidecar_string(&recording.meta))
+    prepare_recording(recording, csv_path)?
+        .commit()
+        .map_err(pair_error)
 }
