@@ -98,7 +98,7 @@ pub fn set(limits: Limits) {
 /// A size or value beyond a limit of [`Limits`] (issue 13: the error names the key or
 /// flag and the limit).
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
-#[error("{what} = {value:e} exceeds the limit of {limit:e}{}", raise_hint(.flag))]
+#[error("{what} = {} exceeds the limit of {}{}", readable(*.value), readable(*.limit), raise_hint(.flag))]
 pub struct LimitError {
     /// What was bounded, with the key or flag it came from, e.g. "`--duration-s` × `--rate-hz` (samples)".
     pub what: String,
@@ -108,6 +108,16 @@ pub struct LimitError {
     pub limit: f64,
     /// The CLI flag that raises the limit for one run (`None`: a fixed bound).
     pub flag: Option<&'static str>,
+}
+
+/// A number as a person reads it: whole numbers below 10⁹ in full (`100`, `134217728`),
+/// others in scientific notation (`1e9`, `1.024e13`).
+fn readable(x: f64) -> String {
+    if x.fract() == 0.0 && x.abs() < 1e9 {
+        format!("{x:.0}")
+    } else {
+        format!("{x:e}")
+    }
 }
 
 fn raise_hint(flag: &Option<&'static str>) -> String {
@@ -162,7 +172,7 @@ mod tests {
         let e = check_count("samples", 1e13, 1 << 27, Some("--max-samples")).unwrap_err();
         assert_eq!(
             e.to_string(),
-            "samples = 1e13 exceeds the limit of 1.34217728e8 (raise it with `--max-samples`)"
+            "samples = 1e13 exceeds the limit of 134217728 (raise it with `--max-samples`)"
         );
         assert!(check_count("samples", 1e3, 1 << 27, None).is_ok());
         assert!(check_value("x", f64::NAN, 1.0, None).is_err());

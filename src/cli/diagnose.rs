@@ -16,7 +16,7 @@ use torsim::diagnose::{
     DiagnoseError, DiagnoseOptions, LabelledRecording, Report, diagnose, report_html,
 };
 use torsim::files::OutputGuard;
-use torsim::recording::read_recording;
+use torsim::recording::{BadSamples, ReadOptions, read_recording_with};
 
 /// Options of the command.
 #[derive(Debug, clap::Args)]
@@ -38,6 +38,10 @@ pub struct DiagnoseArgs {
     /// Highest engine order compared (default 8).
     #[arg(long, value_name = "Q")]
     pub max_order: Option<f64>,
+    /// Over-range or impossible samples in the recordings: refuse (list them),
+    /// interpolate (from their neighbours) or drop (keep the longest stretch without them).
+    #[arg(long, default_value = "refuse", value_parser = super::analyse::parse_bad_samples)]
+    pub bad_samples: BadSamples,
 }
 
 /// Bad input is exit 2; a diagnosis that could not run is exit 1. The library names a
@@ -83,7 +87,11 @@ fn options(a: &DiagnoseArgs) -> Result<DiagnoseOptions, CliError> {
 }
 
 /// Reads every recording, checked against the model's nodes, with its label.
-fn read_all(paths: &[String], nodes: &[String]) -> Result<Vec<LabelledRecording>, CliError> {
+fn read_all(
+    paths: &[String],
+    nodes: &[String],
+    options: &ReadOptions,
+) -> Result<Vec<LabelledRecording>, CliError> {
     let mut seen: Vec<PathBuf> = Vec::new();
     let mut recordings = Vec::with_capacity(paths.len());
     for path in paths {
@@ -97,7 +105,11 @@ fn read_all(paths: &[String], nodes: &[String]) -> Result<Vec<LabelledRecording>
             )));
         }
         seen.push(canonical);
-        let recording = read_recording(file, Some(nodes)).map_err(CliError::input)?;
+        let read = read_recording_with(file, Some(nodes), options).map_err(CliError::input)?;
+        for note in &read.notes {
+            eprintln!("note: {note}");
+        }
+        let recording = read.recording;
         let stem = file
             .file_stem()
             .map_or_else(|| path.clone(), |s| s.to_string_lossy().into_owned());
@@ -147,7 +159,7 @@ pub fn run(a: &DiagnoseArgs) -> Result<(), CliError> {
     guard_report(a)?;
     let options = options(a)?;
     let nodes: Vec<String> = model.inertias.iter().map(|i| i.name.clone()).collect();
-    let recordings = read_all(&a.recordings, &nodes)?;
+    let recordings = read_all(&a.recordings, &nodes, &ReadOptions { bad_samples: a.bad_samples })?;
     let progress = Progress::new("diagnosing");
     let result = diagnose(&model, &recordings, &options, &mut |fraction, stage| {
         progress.message(&format!("diagnosing: {stage}"));
