@@ -105,6 +105,8 @@ pub struct TorsimApp {
     pub close_prompt: bool,
     /// The user chose to discard unsaved edits and close.
     pub close_confirmed: bool,
+    /// A save or export that would replace an open file, waiting for the user's answer.
+    pub confirm: Option<super::overwrite::Confirm>,
     /// The diagnosis tab: recordings, the run, the report.
     pub diagnosis: super::diagnosis::DiagnosisState,
     worker: Worker,
@@ -140,6 +142,7 @@ impl TorsimApp {
             files: files::FileDialogs::default(),
             close_prompt: false,
             close_confirmed: false,
+            confirm: None,
             diagnosis: Default::default(),
             worker: Worker::start(wake),
         };
@@ -341,6 +344,7 @@ impl eframe::App for TorsimApp {
         export::poll(self, ui.ctx());
         recordings::poll(self);
         self.diagnosis.poll();
+        super::overwrite::ui(self, ui.ctx());
         ui.ctx()
             .send_viewport_cmd(egui::ViewportCommand::Title(self.title()));
         let undo = egui::KeyboardShortcut::new(egui::Modifiers::COMMAND, egui::Key::Z);

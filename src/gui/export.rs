@@ -4,6 +4,7 @@
 //! channel and shows in the status line.
 
 use super::app::TorsimApp;
+use super::overwrite::PendingWrite;
 use crossbeam_channel::{Receiver, Sender, TryRecvError, bounded};
 use std::fmt::Write as _;
 use std::path::PathBuf;
@@ -132,8 +133,9 @@ type Outcome = Option<Result<PathBuf, String>>;
 /// Exports in progress.
 #[derive(Default)]
 pub struct Exports {
-    /// A CSV dialog and its writing.
-    csv: Option<Receiver<Outcome>>,
+    /// A CSV dialog: the path chosen and the data (written once checked against the
+    /// open files, [`super::overwrite`]).
+    csv: Option<Receiver<Option<(PathBuf, PlotData)>>>,
     /// The PNG dialog; the screenshot is taken once it has closed.
     png_path: Option<Receiver<Option<PathBuf>>>,
     /// The PNG encoding and writing.
@@ -185,7 +187,7 @@ fn take<T>(slot: &mut Option<Receiver<T>>) -> Option<Result<T, ()>> {
     Some(answer)
 }
 
-/// Asks where to save `data` as CSV and writes it there, off the GUI thread.
+/// Asks where to save `data` as CSV, off the GUI thread; [`poll`] writes it there.
 pub fn export_csv(exports: &mut Exports, ctx: &egui::Context, data: PlotData) {
     let default = file_name(&data.title, "csv");
     exports.csv = Some(on_thread("torsim-export-csv", ctx, move || {
@@ -193,11 +195,7 @@ pub fn export_csv(exports: &mut Exports, ctx: &egui::Context, data: PlotData) {
             .add_filter("CSV", &["csv"])
             .set_file_name(default)
             .save_file()?;
-        Some(
-            std::fs::write(&path, csv_text(&data))
-                .map(|()| path.clone())
-                .map_err(|e| format!("could not write {}: {e}", path.display())),
-        )
+        Some((path, data))
     }));
 }
 
@@ -222,7 +220,7 @@ pub fn screenshot_to(exports: &mut Exports, ctx: &egui::Context, path: PathBuf) 
             .name("torsim-export-png".into())
             .spawn(move || {
                 let written = png_bytes(&image).and_then(|bytes| {
-                    std::fs::write(&path, bytes)
+                    torsim::files::write_atomic(&path, bytes)
                         .map_err(|e| format!("could not write {}: {e}", path.display()))
                 });
                 let _ = tx.send(Some(written.map(|()| path)));
@@ -239,15 +237,16 @@ pub fn poll(app: &mut TorsimApp, ctx: &egui::Context) {
         Some(Err(e)) => *status = e,
         None => {}
     };
-    if let Some(answer) = take(&mut app.exports.csv) {
-        report(
-            answer.unwrap_or_else(|()| failed()),
-            "the plot data",
-            &mut app.status,
-        );
+    // Issue 13: a chosen path that is an open file is written only once the user agrees.
+    match take(&mut app.exports.csv) {
+        Some(Ok(Some((path, data)))) => {
+            super::overwrite::request(app, ctx, PendingWrite::PlotCsv(path, data))
+        }
+        Some(Err(())) => report(failed(), "", &mut app.status),
+        _ => {}
     }
     match take(&mut app.exports.png_path) {
-        Some(Ok(Some(path))) => screenshot_to(&mut app.exports, ctx, path),
+        Some(Ok(Some(path))) => super::overwrite::request(app, ctx, PendingWrite::Png(path)),
         Some(Err(())) => report(failed(), "", &mut app.status),
         _ => {}
     }

@@ -59,7 +59,7 @@ pub fn replace_model(app: &mut TorsimApp, model: torsim::model::Model, path: Opt
 }
 
 /// Takes the answers of finished dialogs.
-pub fn poll(app: &mut TorsimApp, _ctx: &egui::Context) {
+pub fn poll(app: &mut TorsimApp, ctx: &egui::Context) {
     if let Some(rx) = &app.files.open
         && let Ok(answer) = rx.try_recv()
     {
@@ -79,7 +79,8 @@ pub fn poll(app: &mut TorsimApp, _ctx: &egui::Context) {
     {
         app.files.save = None;
         if let Some(path) = answer {
-            save_to(app, path);
+            // Issue 13: over an open recording only once the user agrees.
+            super::overwrite::request(app, ctx, super::overwrite::PendingWrite::Model(path));
         }
     }
 }

@@ -9,6 +9,7 @@ pub mod diagnosis;
 pub mod editor;
 pub mod export;
 pub mod files;
+pub mod overwrite;
 pub mod plots;
 pub mod recording_job;
 pub mod recordings;
@@ -32,6 +33,8 @@ mod tests_edit;
 mod tests_edit_cases;
 #[cfg(test)]
 mod tests_edit_structure;
+#[cfg(test)]
+mod tests_overwrite;
 #[cfg(test)]
 mod tests_plots;
 #[cfg(test)]

@@ -50,7 +50,7 @@ pub fn to_toml_string(model: &Model) -> String {
 /// Writes the model file atomically: a temporary file in the same directory, renamed
 /// over `path` once it is complete.
 pub fn save_model_file(model: &Model, path: &Path) -> std::io::Result<()> {
-    crate::files::write_atomic(path, &to_toml_string(model))
+    crate::files::write_atomic(path, to_toml_string(model))
 }
 
 /// `key = value` on its own line.

@@ -1,20 +1,27 @@
-//! "Save report…": asks where (rfd), renders the page for a person
-//! (`torsim::diagnose::report_html`) and writes it atomically — a temporary file in the
-//! same folder, renamed over the target once complete — all on its own thread.
+//! "Save report…": asks where (rfd, on its own thread); the window then checks the path
+//! against its open files ([`crate::gui::overwrite`], issue 13) and renders the page for a
+//! person (`torsim::diagnose::report_html`) and writes it atomically — a temporary file in
+//! the same folder, renamed over the target once complete.
 
 use crossbeam_channel::{Receiver, TryRecvError, bounded};
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 use torsim::diagnose::{Report, report_html};
 
-/// How a save ended: `None` when the dialog was cancelled.
+/// How the dialog ended: the path chosen, `None` when it was cancelled.
 pub type Outcome = Option<Result<PathBuf, String>>;
 
-/// A save in progress.
-pub struct Saving(Receiver<Outcome>);
+/// A save in progress: the dialog's answer, and what to write.
+pub struct Saving {
+    answer: Receiver<Outcome>,
+    /// The report to write.
+    pub report: Arc<Report>,
+    /// The model it diagnosed.
+    pub model_name: String,
+}
 
 impl Saving {
-    /// Asks where to save `report` (of the model named `model_name`) and writes it.
+    /// Asks where to save `report` (of the model named `model_name`).
     pub fn start(report: Arc<Report>, model_name: String, ctx: &egui::Context) -> Self {
         let (tx, rx) = bounded(1);
         let ctx = ctx.clone();
@@ -26,21 +33,29 @@ impl Saving {
                     .add_filter("HTML page", &["html"])
                     .set_file_name("diagnosis.html")
                     .save_file()
-                    .map(|path| write_page(&path, &report, &model_name));
+                    .map(Ok);
                 let _ = tx.send(outcome);
                 ctx.request_repaint();
             });
         if let Err(e) = spawned {
             let (tx, failed) = bounded(1);
             let _ = tx.send(Some(Err(format!("cannot open the file dialog: {e}"))));
-            return Self(failed);
+            return Self {
+                answer: failed,
+                report,
+                model_name,
+            };
         }
-        Self(rx)
+        Self {
+            answer: rx,
+            report,
+            model_name,
+        }
     }
 
     /// The outcome once the thread is done (`Some(None)`: cancelled).
     pub fn poll(&mut self) -> Option<Outcome> {
-        match self.0.try_recv() {
+        match self.answer.try_recv() {
             Ok(outcome) => Some(outcome),
             Err(TryRecvError::Empty) => None,
             Err(TryRecvError::Disconnected) => {

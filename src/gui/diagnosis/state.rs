@@ -30,6 +30,13 @@ pub struct DiagnosisState {
     pub error: Option<String>,
     /// The report being saved.
     pub saving: Option<Saving>,
+    /// A report path chosen, to check against the open files and write
+    /// ([`crate::gui::overwrite`]).
+    pub pending_save: Option<(
+        std::path::PathBuf,
+        std::sync::Arc<torsim::diagnose::Report>,
+        String,
+    )>,
     /// The outcome of the last accept or save, for a person.
     pub message: String,
 }
@@ -118,13 +125,15 @@ impl DiagnosisState {
                 Err(e) => self.error = Some(e.to_string()),
             }
         }
-        if let Some(outcome) = self.saving.as_mut().and_then(Saving::poll) {
-            self.saving = None;
-            if let Some(outcome) = outcome {
-                self.message = match outcome {
-                    Ok(path) => format!("saved the report to {}", path.display()),
-                    Err(e) => e,
-                };
+        if let Some(outcome) = self.saving.as_mut().and_then(Saving::poll)
+            && let Some(saving) = self.saving.take()
+        {
+            match outcome {
+                Some(Ok(path)) => {
+                    self.pending_save = Some((path, saving.report, saving.model_name));
+                }
+                Some(Err(e)) => self.message = e,
+                None => {}
             }
         }
     }
