@@ -71,12 +71,10 @@ fn sidecar_corpus_reads_without_panic() {
     replay("corpus", "sidecar", targets::sidecar);
 }
 
-/// Inputs the fuzzer found that still fail on this branch, each fixed on another branch of
-/// issue 13: `sidecar/speed-1e300.toml` — `sidecar_string` writes `speed_rpm = 1e300` as
-/// 301 digits, which TOML reads as an overflowing integer, so a written sidecar does not
-/// read back. Once fixed, move the files into `fuzz/corpus/` and drop the `ignore`.
+/// Inputs the fuzzer found, kept as regressions once fixed: `sidecar/speed-1e300.toml` —
+/// `sidecar_string` wrote `speed_rpm = 1e300` as 301 digits, which TOML reads as an
+/// overflowing integer, so a written sidecar did not read back.
 #[test]
-#[ignore = "issue 13: the sidecar writer's large numbers, fixed on branch h-recording; lead merges"]
 fn regressions_read_without_panic() {
     replay("regressions", "sidecar", targets::sidecar);
 }

@@ -295,7 +295,9 @@ pub fn sidecar_text(meta: &RecordingMeta, check: Option<&CsvCheck>) -> String {
         if x.fract() == 0.0 && x.abs() < 1e15 {
             format!("{x:.1}")
         } else {
-            format!("{x}")
+            // `{:?}` keeps an exponent (`1e300`): `{}` would print 301 digits, which TOML
+            // reads as an overflowing integer (found by the sidecar fuzz target).
+            format!("{x:?}")
         }
     };
     if let Some(n) = meta.speed_rpm {
