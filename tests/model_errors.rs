@@ -298,7 +298,12 @@ fn node_and_connection_names_every_format_can_carry() {
     // Interior spaces and other printable Unicode read back from a CSV header.
     parse_model(&node("\"Kurbel welle Ü\""), "t").expect("printable name");
     let t = replaced(BASE, "kind = \"shaft\"", "kind = \"shaft\"\nname = \"s,1\"");
-    fails(&t, "connection[0].name", "s,1", "connection name \"s,1\" contains a comma");
+    fails(
+        &t,
+        "connection[0].name",
+        "s,1",
+        "connection name \"s,1\" contains a comma",
+    );
 }
 
 #[test]
@@ -310,7 +315,10 @@ fn cylinders_above_the_limit_are_refused() {
     let t = with(&replaced(
         ENGINE,
         "cylinders = 2",
-        &format!("cylinders = 64\nfiring_angles_deg = [{}]", at.replace("\"a\"", "0")),
+        &format!(
+            "cylinders = 64\nfiring_angles_deg = [{}]",
+            at.replace("\"a\"", "0")
+        ),
     ));
     parse_model(&t, "t").expect("64 cylinders is within the limit");
 }
@@ -320,7 +328,12 @@ fn operation_orders_empty_or_out_of_range_are_refused() {
     let t = with("\n[operation]\norders = []\n");
     fails(&t, "operation.orders", "orders", "is empty");
     let t = with("\n[operation]\norders = [1, 100.5]\n");
-    fails(&t, "operation.orders[1]", "orders", "above the limit max_order = 100");
+    fails(
+        &t,
+        "operation.orders[1]",
+        "orders",
+        "above the limit max_order = 100",
+    );
     let t = with("\n[operation]\norders = [0.5, 100]\n");
     parse_model(&t, "t").expect("order 100 is within the limit");
     let t = with("\n[[harmonic]]\nat = \"a\"\norder = 1e9\namplitude = 1\nphase_deg = 0\n");
@@ -361,7 +374,9 @@ fn model_files_not_utf8_name_line_and_offset_and_bom_crlf_are_accepted() {
     let dir = std::env::temp_dir().join(format!("torsim-model-utf8-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let bad = dir.join("latin1.toml");
-    let mut bytes = BASE.replace("name = \"b\"", "name = \"b\u{e9}\"").into_bytes();
+    let mut bytes = BASE
+        .replace("name = \"b\"", "name = \"b\u{e9}\"")
+        .into_bytes();
     let at = bytes.iter().position(|&b| b == 0xC3).unwrap();
     bytes.splice(at..at + 2, [0xE9]);
     std::fs::write(&bad, &bytes).unwrap();
@@ -380,12 +395,22 @@ fn model_files_not_utf8_name_line_and_offset_and_bom_crlf_are_accepted() {
 #[test]
 fn rubber_temperatures_outside_the_law_are_refused() {
     let t = with(&format!("{RUBBER}temperature_c = -300.0\n"));
-    fails(&t, "connection[1].temperature_c", "temperature_c", "-300 °C is outside");
+    fails(
+        &t,
+        "connection[1].temperature_c",
+        "temperature_c",
+        "-300 °C is outside",
+    );
     assert!(error(&t).message.contains("-100 … 300 °C"));
     let t = with(&format!(
         "{RUBBER}thermal = {{ capacity_j_per_k = 1, conductance_w_per_k = 1, ambient_c = 400 }}\n"
     ));
-    fails(&t, "connection[1].thermal.ambient_c", "thermal", "400 °C is outside");
+    fails(
+        &t,
+        "connection[1].thermal.ambient_c",
+        "thermal",
+        "400 °C is outside",
+    );
     parse_model(&with(&format!("{RUBBER}temperature_c = -40.0\n")), "t").expect("−40 °C");
 }
 
@@ -419,7 +444,12 @@ fn magnitudes_that_make_the_system_singular_are_refused_at_their_key() {
     parse_model(GEARED, "t").expect("valid");
     for ratio in ["1e-300", "1e-5", "2e4", "-1e5"] {
         let t = replaced(GEARED, "ratio = 0.5", &format!("ratio = {ratio}"));
-        fails(&t, "connection[0].ratio", "ratio", "magnitude from 1e-4 to 1e4");
+        fails(
+            &t,
+            "connection[0].ratio",
+            "ratio",
+            "magnitude from 1e-4 to 1e4 (one gear",
+        );
     }
     parse_model(&replaced(GEARED, "ratio = 0.5", "ratio = -1e4"), "t").expect("1:10 000");
     let t = replaced(GEARED, "stiffness = 1000.0", "stiffness = 1e-308");

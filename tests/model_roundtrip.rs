@@ -65,7 +65,8 @@ fn everything() -> Model {
     model.description = "line one\nline two with 'single' quotes".into();
     model.inertias[0].inertia_kg_m2 = 0.1 + 0.2;
     model.inertias[0].damping_nm_s_per_rad = 1e-300;
-    model.inertias[1].inertia_kg_m2 = 1e16;
+    // Exponent form; on a damping: an inertia of 1e16 beside 0.3 is refused as round-off.
+    model.inertias[1].damping_nm_s_per_rad = 1e16;
     model.connections[0].name = "coupling".into();
     let engine = model.engine.as_mut().expect("engine");
     let curve = match &engine.pressure {

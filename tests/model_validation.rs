@@ -305,7 +305,11 @@ fn rubber_polynomial_checks() {
 
 #[test]
 fn harmonic_checks() {
-    let h = |body: &str| with(&format!("\n[[harmonic]]\nat = \"a\"\nphase_deg = 0\n{body}\n"));
+    let h = |body: &str| {
+        with(&format!(
+            "\n[[harmonic]]\nat = \"a\"\nphase_deg = 0\n{body}\n"
+        ))
+    };
     fails(
         &h("order = 0\namplitude = 5"),
         "harmonic[0].order",

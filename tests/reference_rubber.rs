@@ -149,7 +149,10 @@ fn frequency_factor_at_or_below_zero_is_found_and_refused() {
     // At 100 Hz α_f = 1 − 2 = −1: the state says which factor is not positive.
     let s = stage.state(Some(100.0), 25.0, 0.0);
     assert_eq!(s.non_positive_factor(), Some((Factor::Frequency, -1.0)));
-    assert_eq!(stage.state(Some(10.0), 25.0, 0.0).non_positive_factor(), None);
+    assert_eq!(
+        stage.state(Some(10.0), 25.0, 0.0).non_positive_factor(),
+        None
+    );
     // The minimum of a quadratic over a band: an end, or the vertex (1 − 0.02 f + 1e-4 f²
     // has its vertex at 100 Hz, value 0), held beyond the measured range.
     let p = stage.frequency_poly.clone().unwrap();
@@ -181,8 +184,33 @@ fn frequency_factor_at_or_below_zero_is_found_and_refused() {
             value,
         })) => {
             assert_eq!(connection, "r");
-            assert!(frequency_hz > 50.0 && value <= 0.0, "{frequency_hz} Hz: {value}");
+            assert!(
+                frequency_hz > 50.0 && value <= 0.0,
+                "{frequency_hz} Hz: {value}"
+            );
         }
         other => panic!("expected a refusal, got {:?}", other.map(|_| ())),
+    }
+}
+
+/// Modes refuse α_f ≤ 0 at a mode's frequency (issue 13: a negative stiffness gave a mode
+/// at 30.5 Hz with a −3.5 % damping ratio, exit 0).
+#[test]
+fn modes_refuse_a_frequency_factor_at_or_below_zero() {
+    use torsim::physics::PhysicsError;
+    let text = torsim::model::presets::preset("test-rig-mod1")
+        .unwrap()
+        .text
+        .replacen("psi = 0.75", "psi = 0.75\nfrequency_poly = [0, -0.5, 1]", 1);
+    let model = torsim::model::parse_model(&text, "rig.toml").expect("valid");
+    let system = System::new(&model, OperatingPoint::default()).unwrap();
+    match modes(&system) {
+        Err(PhysicsError::FrequencyFactor {
+            connection, value, ..
+        }) => {
+            assert_eq!(connection, "b");
+            assert!(value <= 0.0, "{value}");
+        }
+        other => panic!("expected a refusal, got {other:?}"),
     }
 }

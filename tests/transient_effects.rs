@@ -192,6 +192,7 @@ amplitude_poly = [0.0, -0.5, 1.0]
 at = "a"
 order = 1.0
 amplitude = 200.0
+phase_deg = 0.0
 "#;
     let model = parse_model(text, "runaway.toml").unwrap();
     let options = RunOptions {

@@ -65,7 +65,15 @@ pub fn run(named: &[String], json: bool) -> Result<(), CliError> {
         }
         let checks: Vec<_> = outcomes
             .iter()
-            .map(|o| json!({"kind": o.kind, "expected": o.expected, "computed": o.computed, "value": o.value, "passed": o.passed}))
+            .map(|o| {
+                let mut check = json!({"kind": o.kind, "expected": o.expected, "computed": o.computed, "passed": o.passed});
+                // `value` only where the check has a number: never null (issue 13); what
+                // was found is in `computed`.
+                if let Some(v) = o.value.filter(|v| v.is_finite()) {
+                    check["value"] = json!(v);
+                }
+                check
+            })
             .collect();
         reports.push(json!({"file": file, "passed": passed, "checks": checks}));
     }

@@ -169,7 +169,13 @@ mod tests {
     #[test]
     fn a_frequency_factor_at_or_below_zero_is_refused() {
         let text = torsim::model::presets::preset("test-rig-mod1")
-            .map(|p| p.text.replacen("psi = 0.75", "psi = 0.75\nfrequency_poly = [0, -0.02, 1]", 1))
+            .map(|p| {
+                p.text.replacen(
+                    "psi = 0.75",
+                    "psi = 0.75\nfrequency_poly = [0, -0.02, 1]",
+                    1,
+                )
+            })
             .unwrap();
         let path = std::env::temp_dir().join(format!("torsim-negf-{}.toml", std::process::id()));
         std::fs::write(&path, text).unwrap();

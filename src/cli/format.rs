@@ -30,7 +30,11 @@ pub fn print_json(value: &Value) -> Result<(), CliError> {
 pub fn number(value: f64, what: &str) -> Result<Value, CliError> {
     serde_json::Number::from_f64(value)
         .map(Value::Number)
-        .ok_or_else(|| CliError::failed(anyhow::anyhow!("{what} is not finite ({value})")))
+        .ok_or_else(|| {
+            CliError::failed(anyhow::anyhow!(
+                "{what} could not be computed (the result is {value}, which JSON cannot carry)"
+            ))
+        })
 }
 
 /// A list of finite numbers as JSON.

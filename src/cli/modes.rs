@@ -5,8 +5,8 @@ use super::error::CliError;
 use super::format::{emit, number, outln, print_json, print_warnings, table};
 use super::input::{check_load, load_model};
 use super::values;
-use serde_json::{Map, json};
-use torsim::modal::{damped_modes, modes};
+use serde_json::{Map, Value, json};
+use torsim::modal::{DampedMode, damped_modes, modes};
 use torsim::physics::{OperatingPoint, System};
 
 /// Runs the command.
@@ -28,17 +28,13 @@ pub fn run(model_arg: &str, speed_rpm: Option<f64>, load: f64, json: bool) -> Re
     if json {
         let mut list = Vec::new();
         for (i, (m, d)) in modes.iter().zip(&damped).enumerate() {
-            let mut shape = Map::new();
-            for (name, v) in system.node_names.iter().zip(m.shape_by_node(&system)) {
-                shape.insert(name.clone(), number(v, "mode shape")?);
-            }
-            list.push(json!({
-                "mode": i + 1,
-                "frequency_hz": number(m.frequency_hz, "natural frequency")?,
-                "damped_frequency_hz": number(d.frequency_hz, "damped frequency")?,
-                "damping_ratio": number(d.damping_ratio, "damping ratio")?,
-                "shape": shape,
-            }));
+            list.push(mode_entry(
+                i,
+                m.frequency_hz,
+                &m.shape_by_node(&system),
+                d,
+                &system,
+            )?);
         }
         let mut doc = json!({
             "model": model.name,
@@ -70,23 +66,85 @@ pub fn run(model_arg: &str, speed_rpm: Option<f64>, load: f64, json: bool) -> Re
         .zip(&damped)
         .enumerate()
         .map(|(i, (m, d))| {
+            let known = |text: String| if damped_known(d) { text } else { "—".into() };
             let mut row = vec![
                 format!("{}", i + 1),
                 format!("{:.3}", m.frequency_hz),
-                format!("{:.3}", d.frequency_hz),
+                known(format!("{:.3}", d.frequency_hz)),
                 // `+ 0.0` turns −0 into 0: an undamped mode prints 0.00, not -0.00.
-                format!("{:.2}", 100.0 * d.damping_ratio + 0.0),
+                known(format!("{:.2}", 100.0 * d.damping_ratio + 0.0)),
             ];
             row.extend(m.shape_by_node(&system).iter().map(|v| format!("{v:+.4}")));
             row
         })
         .collect();
     text += &table(&header, &rows);
+    if damped.iter().any(|d| !damped_known(d)) {
+        outln!(text, "—: {NOT_DAMPED}");
+    }
     emit(&text)
+}
+
+/// One mode's JSON: a damped frequency not found is said (`not_computed`), never null.
+fn mode_entry(
+    i: usize,
+    frequency_hz: f64,
+    shape_by_node: &[f64],
+    d: &DampedMode,
+    system: &System,
+) -> Result<Value, CliError> {
+    let mut shape = Map::new();
+    for (name, &v) in system.node_names.iter().zip(shape_by_node) {
+        shape.insert(name.clone(), number(v, "mode shape")?);
+    }
+    let mut entry = json!({
+        "mode": i + 1,
+        "frequency_hz": number(frequency_hz, "natural frequency")?,
+        "shape": shape,
+    });
+    if damped_known(d) {
+        entry["damped_frequency_hz"] = number(d.frequency_hz, "damped frequency")?;
+        entry["damping_ratio"] = number(d.damping_ratio, "damping ratio")?;
+    } else {
+        entry["not_computed"] = json!(NOT_DAMPED);
+    }
+    Ok(entry)
+}
+
+/// Why a mode has no damped frequency (issue 13: said instead of NaN or null).
+const NOT_DAMPED: &str = "damped frequency and damping ratio not computed: neither the \
+     Rayleigh iteration nor the state matrix gave a damped eigenvalue near this mode";
+
+/// True when the damped eigenvalue of a mode was found.
+fn damped_known(d: &DampedMode) -> bool {
+    d.frequency_hz.is_finite() && d.damping_ratio.is_finite()
 }
 
 #[cfg(test)]
 mod tests {
+    use super::*;
+
+    #[test]
+    fn a_damped_frequency_not_found_is_said_not_null() {
+        let model = torsim::model::parse_model(
+            torsim::model::presets::preset("test-rig-mod1")
+                .unwrap()
+                .text,
+            "rig",
+        )
+        .unwrap();
+        let system = System::new(&model, OperatingPoint::default()).unwrap();
+        let nan = DampedMode {
+            frequency_hz: f64::NAN,
+            damping_ratio: f64::NAN,
+        };
+        let shape = vec![1.0; system.node_names.len()];
+        let entry = mode_entry(0, 10.0, &shape, &nan, &system).unwrap();
+        assert_eq!(entry["not_computed"], json!(NOT_DAMPED));
+        assert!(entry.get("damped_frequency_hz").is_none());
+        assert!(!entry.to_string().contains("null"), "{entry}");
+    }
+
     #[test]
     fn nonsense_speeds_are_refused() {
         for n in [f64::NAN, -5.0, 0.0, 1e300] {
@@ -94,7 +152,10 @@ mod tests {
             assert_eq!(e.code, 2);
             let text = e.error.to_string();
             assert!(text.starts_with("--speed-rpm "), "{text}");
-            assert!(text.contains("finite, > 0 and at most 100000 rpm"), "{text}");
+            assert!(
+                text.contains("finite, > 0 and at most 100000 rpm"),
+                "{text}"
+            );
         }
     }
 }

@@ -106,7 +106,13 @@ mod tests {
         for bad in [f64::NAN, 361.0, -1e9] {
             assert!(twist_deg("--twist-deg", bad).is_err(), "{bad}");
         }
-        let e = speed_rpm("--speed-rpm", f64::NAN).unwrap_err().error.to_string();
-        assert!(e.starts_with("--speed-rpm NaN: a speed must be finite"), "{e}");
+        let e = speed_rpm("--speed-rpm", f64::NAN)
+            .unwrap_err()
+            .error
+            .to_string();
+        assert!(
+            e.starts_with("--speed-rpm NaN: a speed must be finite"),
+            "{e}"
+        );
     }
 }

@@ -107,9 +107,13 @@ pub fn modes(system: &System) -> Result<Vec<Mode>, PhysicsError> {
             })
             .collect());
     }
+    // α_f ≤ 0 at rest or at a mode's frequency would be a negative stiffness: refused,
+    // naming the stage and the frequency (issue 13), as the forced response does.
+    system.check_frequency(0.0)?;
     (0..values.len())
         .map(|i| {
             let f = mode_fixed_point(system, &inv_sqrt_m, i, to_hz(values[i]))?;
+            system.check_frequency(f)?;
             let (w2, shapes) = solve_at(system, &inv_sqrt_m, f, true);
             let shapes =
                 shapes.ok_or_else(|| PhysicsError::NoConvergence("no mode shapes".into()))?;

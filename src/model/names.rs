@@ -40,13 +40,19 @@ pub fn name_problem(name: &str) -> Option<String> {
         return Some("starts or ends with a space".into());
     }
     let bad = name.chars().find(|&c| {
-        c == ',' || c == '"' || c.is_control() || (c.is_whitespace() && c != ' ')
+        c == ','
+            || c == '"'
+            || c.is_control()
+            || (c.is_whitespace() && c != ' ')
             || INVISIBLE.iter().any(|r| r.contains(&c))
     })?;
     Some(match bad {
         ',' => "contains a comma".into(),
         '"' => "contains a double quote".into(),
-        c => format!("contains the control or invisible character U+{:04X}", u32::from(c)),
+        c => format!(
+            "contains the control or invisible character U+{:04X}",
+            u32::from(c)
+        ),
     })
 }
 
@@ -73,7 +79,14 @@ mod tests {
 
     #[test]
     fn accepts_what_every_format_carries() {
-        for ok in ["engine", "throw 1", "crank_12", "Kurbelwelle-Ü", "a.b(2)/c#3", "x_nm"] {
+        for ok in [
+            "engine",
+            "throw 1",
+            "crank_12",
+            "Kurbelwelle-Ü",
+            "a.b(2)/c#3",
+            "x_nm",
+        ] {
             assert_eq!(name_problem(ok), None, "{ok}");
         }
     }

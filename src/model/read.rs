@@ -55,9 +55,9 @@ fn syntax_message(text: &str, e: &toml_edit::TomlError) -> String {
         .map(str::trim)
         .filter(|s| !s.is_empty() && !s.contains('\n'));
     match spanned {
-        Some(key) if message == "duplicate key" => format!(
-            "TOML syntax error: duplicate key `{key}` (a key may be given once per table)"
-        ),
+        Some(key) if message == "duplicate key" => {
+            format!("TOML syntax error: duplicate key `{key}` (a key may be given once per table)")
+        }
         _ => format!("TOML syntax error: {message}"),
     }
 }

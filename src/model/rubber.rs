@@ -104,7 +104,11 @@ impl Poly {
             .map(|x| (x, self.eval(x)))
             .fold((lo, f64::INFINITY), |best, (x, v)| {
                 // A NaN value counts as the smallest: it must be refused too.
-                if v < best.1 || v.is_nan() { (x, v) } else { best }
+                if v < best.1 || v.is_nan() {
+                    (x, v)
+                } else {
+                    best
+                }
             })
     }
 

@@ -28,8 +28,8 @@ pub(crate) fn gear_ratio(key: &str, ratio: f64) -> Check {
         fail(
             key,
             format!(
-                "must be finite with a magnitude from 1e-4 to 1e4 (one gear stage), found \
-                 {ratio:e}"
+                "must be finite and non-zero, with a magnitude from 1e-4 to 1e4 (one gear \
+                 stage), found {ratio:e}"
             ),
         )
     }
@@ -51,7 +51,11 @@ pub(crate) fn magnitudes(model: &Model, ratios: &[f64]) -> Check {
     if ratios.len() != model.inertias.len() {
         return Ok(());
     }
-    let r2 = |name: &str| model.node_index(name).map_or(1.0, |i| ratios[i] * ratios[i]);
+    let r2 = |name: &str| {
+        model
+            .node_index(name)
+            .map_or(1.0, |i| ratios[i] * ratios[i])
+    };
     let mut stiffness = Vec::with_capacity(model.connections.len());
     for (j, c) in model.connections.iter().enumerate() {
         let own = if c.from == GROUND { &c.to } else { &c.from };
@@ -77,7 +81,10 @@ pub(crate) fn magnitudes(model: &Model, ratios: &[f64]) -> Check {
     }
     let connection = |r: Referred| {
         let c = &model.connections[r.index];
-        (format!("connection[{}].{}", r.index, r.sub), format!("connection `{}`", c.name))
+        (
+            format!("connection[{}].{}", r.index, r.sub),
+            format!("connection `{}`", c.name),
+        )
     };
     above_round_off(&stiffness, "stiffness", "N·m/rad", connection)?;
     let inertia: Vec<Referred> = model
@@ -92,7 +99,10 @@ pub(crate) fn magnitudes(model: &Model, ratios: &[f64]) -> Check {
         .collect();
     let node = |r: Referred| {
         let name = &model.inertias[r.index].name;
-        (format!("inertia[{}].inertia", r.index), format!("node `{name}`"))
+        (
+            format!("inertia[{}].inertia", r.index),
+            format!("node `{name}`"),
+        )
     };
     above_round_off(&inertia, "inertia", "kg·m²", node)
 }
@@ -108,7 +118,10 @@ fn above_round_off(
     let Some(&largest) = values.iter().max_by(|a, b| a.value.total_cmp(&b.value)) else {
         return Ok(());
     };
-    match values.iter().find(|v| !(v.value >= ROUND_OFF * largest.value)) {
+    match values
+        .iter()
+        .find(|v| v.value.is_nan() || v.value < ROUND_OFF * largest.value)
+    {
         None => Ok(()),
         Some(&v) => {
             let ((key, what), (_, big)) = (name(v), name(largest));

@@ -49,7 +49,10 @@ pub fn static_connection_torques(model: &Model, system: &System) -> Result<Vec<f
         torque[h] = 0.0;
     }
     let lu = k.clone().lu();
-    let angle = match lu.solve(&torque).filter(|a| a.iter().all(|v| v.is_finite())) {
+    let angle = match lu
+        .solve(&torque)
+        .filter(|a| a.iter().all(|v| v.is_finite()))
+    {
         Some(angle) => angle,
         None => return Err(unheld(system, &k, &lu.u())),
     };
@@ -74,7 +77,7 @@ fn unheld(system: &System, k: &DMatrix<f64>, u: &DMatrix<f64>) -> PhysicsError {
     let pivot = (0..u.nrows())
         .map(|j| (j, u[(j, j)].abs()))
         .min_by(|a, b| a.1.total_cmp(&b.1).then(b.0.cmp(&a.0)))
-        .filter(|&(_, p)| !(p > 1e-12 * scale));
+        .filter(|&(_, p)| p.is_nan() || p <= 1e-12 * scale);
     let nodes: Vec<String> = pivot.map_or_else(Vec::new, |(dof, _)| {
         system
             .dof_of_node

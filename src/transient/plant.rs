@@ -8,8 +8,8 @@
 
 use super::TransientError;
 use super::maxwell::{MaxwellChain, excited_band_hz};
-use crate::physics::PhysicsError;
 use crate::model::{ConnectionKind, GROUND, HarmonicAmplitude, Model, Poly};
+use crate::physics::PhysicsError;
 use crate::physics::{OperatingPoint, System, engine};
 
 /// Samples of the cylinder pressure table per working cycle (0.1° for a 4-stroke).
@@ -265,7 +265,7 @@ impl Plant {
                         .frequency_poly
                         .as_ref()
                         .map(|p| p.min_over([0.0, band[1]]))
-                        .filter(|(_, v)| !(*v > 0.0))
+                        .filter(|(_, v)| v.is_nan() || *v <= 0.0)
                     {
                         return Err(PhysicsError::FrequencyFactor {
                             connection: c.name.clone(),
