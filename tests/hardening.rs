@@ -361,6 +361,27 @@ fn crashes_and_hangs() -> Vec<Case> {
             after: None,
         },
         Case {
+            name: "thermal-stage-with-tiny-capacity",
+            setup: |d| {
+                let thermal = "psi = 1.0\nthermal = { capacity_j_per_k = 1e-9, conductance_w_per_k = 1.0, ambient_c = 25.0 }\n";
+                let m = model(d, "test-rig-70sh", &[("psi = 1.0\n", thermal)]);
+                args(&["simulate", &m, "--speed-rpm", "3000", "--duration-s", "0.2"])
+            },
+            exit: 0,
+            words: &["thermal time constant", "quasi-statically"],
+            after: None,
+        },
+        Case {
+            name: "explicit-method-on-a-stiff-model",
+            setup: |d| {
+                let m = model(d, "test-rig-70sh", &[("stiffness = 18055.4", "stiffness = 1e12")]);
+                args(&["simulate", &m, "--speed-rpm", "3000", "--duration-s", "0.2", "--method", "explicit"])
+            },
+            exit: 1,
+            words: &["step budget", "connection `a`", "--method implicit"],
+            after: None,
+        },
+        Case {
             name: "cylinders-100000",
             setup: |d| {
                 let m = model(
@@ -504,6 +525,38 @@ fn wrong_but_silent() -> Vec<Case> {
             },
             exit: 2,
             words: &["m.toml", "orders"],
+            after: None,
+        },
+        Case {
+            name: "coupling-frequency-factor-below-zero",
+            setup: |d| {
+                let poly = "psi = 1.0\nfrequency_poly = [0.0, -0.02, 1.0]\n";
+                let m = model(d, "test-rig-70sh", &[("psi = 1.0\n", poly)]);
+                args(&["coupling", &m, "--frequency-hz", "100"])
+            },
+            exit: 2,
+            words: &["rubber stage `b`", "frequency_poly", "100.0 Hz"],
+            after: None,
+        },
+        Case {
+            name: "simulate-frequency-factor-below-zero",
+            setup: |d| {
+                let poly = "psi = 1.0\nfrequency_poly = [0.0, -0.02, 1.0]\n";
+                let m = model(d, "test-rig-70sh", &[("psi = 1.0\n", poly)]);
+                args(&["simulate", &m, "--speed-rpm", "3000", "--duration-s", "0.2"])
+            },
+            exit: 2,
+            words: &["rubber stage `b`", "frequency_poly"],
+            after: None,
+        },
+        Case {
+            name: "missing-harmonic-phase",
+            setup: |d| {
+                let m = model(d, "test-rig-70sh", &[("phase_deg = 0.0\n", "")]);
+                args(&["modes", &m])
+            },
+            exit: 2,
+            words: &["m.toml", "harmonic[0].phase_deg", "missing"],
             after: None,
         },
         Case {
@@ -697,6 +750,34 @@ fn vague_errors() -> Vec<Case> {
             },
             exit: 2,
             words: &["m.toml", "line 2", "utf-8"],
+            after: None,
+        },
+        Case {
+            name: "gear-ratio-1e-300",
+            setup: |d| {
+                let m = model(
+                    d,
+                    "test-rig-70sh",
+                    &[("ratio = 0.3333333333333333", "ratio = 1e-300")],
+                );
+                args(&["modes", &m])
+            },
+            exit: 2,
+            words: &["m.toml", "ratio", "1e-300"],
+            after: None,
+        },
+        Case {
+            name: "stiffness-1e-308",
+            setup: |d| {
+                let m = model(
+                    d,
+                    "test-rig-70sh",
+                    &[("stiffness = 18055.4", "stiffness = 1e-308")],
+                );
+                args(&["modes", &m])
+            },
+            exit: 2,
+            words: &["m.toml", "stiffness", "round-off"],
             after: None,
         },
         Case {

@@ -159,7 +159,13 @@ pub fn run(a: &DiagnoseArgs) -> Result<(), CliError> {
     guard_report(a)?;
     let options = options(a)?;
     let nodes: Vec<String> = model.inertias.iter().map(|i| i.name.clone()).collect();
-    let recordings = read_all(&a.recordings, &nodes, &ReadOptions { bad_samples: a.bad_samples })?;
+    let recordings = read_all(
+        &a.recordings,
+        &nodes,
+        &ReadOptions {
+            bad_samples: a.bad_samples,
+        },
+    )?;
     let progress = Progress::new("diagnosing");
     let result = diagnose(&model, &recordings, &options, &mut |fraction, stage| {
         progress.message(&format!("diagnosing: {stage}"));

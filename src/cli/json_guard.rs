@@ -76,10 +76,16 @@ mod tests {
         });
         assert_eq!(
             null_paths(&doc),
-            vec!["fit.before_chi2".to_string(), "modes[1].frequency_hz".to_string()]
+            vec![
+                "fit.before_chi2".to_string(),
+                "modes[1].frequency_hz".to_string()
+            ]
         );
         let e = check(&doc).unwrap_err();
-        assert!(e.starts_with("could not compute fit.before_chi2, modes[1]"), "{e}");
+        assert!(
+            e.starts_with("could not compute fit.before_chi2, modes[1]"),
+            "{e}"
+        );
         assert!(check(&json!({"a": [1, 2.5, "x", true]})).is_ok());
     }
 }

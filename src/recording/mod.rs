@@ -13,8 +13,8 @@ pub mod timing;
 pub mod types;
 pub mod write;
 
-pub use error::{Reason, RecordingError};
 pub use bad_samples::BadSamples;
+pub use error::{Reason, RecordingError};
 pub use integrity::CsvCheck;
 pub use read::{
     ReadOptions, ReadOutcome, parse_recording, parse_recording_with, read_recording,

@@ -129,7 +129,10 @@ pub fn angle_grid(
         });
     }
     let dt = uniform_interval(time_s)?;
-    if let Some(k) = reference_rpm.iter().position(|&n| !(n > 0.0 && n.is_finite())) {
+    if let Some(k) = reference_rpm
+        .iter()
+        .position(|&n| !(n > 0.0 && n.is_finite()))
+    {
         return Err(SignalError::NonPositiveSpeed { time_s: time_s[k] });
     }
     let theta = reference_angle_rev(reference_rpm, dt);
