@@ -318,7 +318,11 @@ fn bom_is_stripped_and_bad_utf8_located() {
     let dir = temp_dir("bad-utf8");
     let good = csv(200);
     // Line 4 (comment, header, two rows before it): byte 0xFF in place of a digit.
-    let at = good.match_indices('\n').nth(2).map(|(i, _)| i + 1).unwrap_or(0);
+    let at = good
+        .match_indices('\n')
+        .nth(2)
+        .map(|(i, _)| i + 1)
+        .unwrap_or(0);
     let mut bytes = good.into_bytes();
     bytes[at + 2] = 0xFF;
     let path = dir.join("run-a.csv");
@@ -351,12 +355,17 @@ fn real_clocks_are_accepted() {
         let read = torsim::recording::read_recording_with(&path, None, &Default::default())
             .unwrap_or_else(|e| panic!("{name}: {e}"));
         let t = &read.recording.time_s;
-        let dt = torsim::signal::resample::uniform_interval(t)
-            .unwrap_or_else(|e| panic!("{name}: {e}"));
+        let dt =
+            torsim::signal::resample::uniform_interval(t).unwrap_or_else(|e| panic!("{name}: {e}"));
         // The fitted step is the true one to 1e-6 of itself (4000 samples average the
         // rounding down).
         assert!((dt * 10240.0 - 1.0).abs() < 1e-6, "{name}: dt {dt}");
-        assert_eq!(read.notes.is_empty(), name != "jitter", "{name}: {:?}", read.notes);
+        assert_eq!(
+            read.notes.is_empty(),
+            name != "jitter",
+            "{name}: {:?}",
+            read.notes
+        );
     }
 }
 
@@ -377,11 +386,30 @@ fn gaps_and_duplicates_name_their_line() {
         .map(|l| format!("{l}\n"))
         .collect();
     // Line 1 is the header; the sample at 0.4 s is row 4097 (line 4098), 0.5 s the next.
-    let e = rejects("gap", &text, SIDECAR, "run-a.csv", Some(4099), "gap in the sampling");
-    assert!(e.to_string().contains("at 0.4 s") && e.to_string().contains("0.5 s"), "{e}");
+    let e = rejects(
+        "gap",
+        &text,
+        SIDECAR,
+        "run-a.csv",
+        Some(4099),
+        "gap in the sampling",
+    );
+    assert!(
+        e.to_string().contains("at 0.4 s") && e.to_string().contains("0.5 s"),
+        "{e}"
+    );
     assert_eq!(e.key.as_deref(), Some("time_s"));
-    let dup = csv_at(rows, 0.0, &|t, k| format!("{:.7}", if k == 300 { t - 9e-5 } else { t }));
-    rejects("dup", &dup, SIDECAR, "run-a.csv", Some(302), "duplicate sample");
+    let dup = csv_at(rows, 0.0, &|t, k| {
+        format!("{:.7}", if k == 300 { t - 9e-5 } else { t })
+    });
+    rejects(
+        "dup",
+        &dup,
+        SIDECAR,
+        "run-a.csv",
+        Some(302),
+        "duplicate sample",
+    );
 }
 
 /// Issue 13: over-range markers and impossible speeds are reported by column and line
@@ -410,24 +438,46 @@ fn bad_samples_are_reported_and_handled() {
         assert!(e.to_string().contains("line 3001"), "{e}");
     }
     let many = mark("9.9e37", &(100..120).collect::<Vec<_>>());
-    let e = rejects("many", &many, SIDECAR, "run-a.csv", Some(101), "20 bad samples");
+    let e = rejects(
+        "many",
+        &many,
+        SIDECAR,
+        "run-a.csv",
+        Some(101),
+        "20 bad samples",
+    );
     assert!(e.to_string().contains("and 15 more"), "{e}");
     let dir = temp_dir("bad-handled");
     let path = put(&dir, "run-a.csv", &mark("1e300", &[3000, 4500]));
     put(&dir, "run-a.toml", SIDECAR);
     let options = |bad_samples| ReadOptions { bad_samples };
-    let read = read_recording_with(&path, None, &options(BadSamples::Interpolate))
-        .expect("interpolated");
+    let read =
+        read_recording_with(&path, None, &options(BadSamples::Interpolate)).expect("interpolated");
     let crank = read.recording.speed_rpm("crank").expect("crank");
-    assert_eq!((crank.len(), crank[2999], crank[4499]), (6000, 1500.0, 1500.0));
-    assert!(read.notes[0].contains("interpolated 2 bad samples"), "{:?}", read.notes);
+    assert_eq!(
+        (crank.len(), crank[2999], crank[4499]),
+        (6000, 1500.0, 1500.0)
+    );
+    assert!(
+        read.notes[0].contains("interpolated 2 bad samples"),
+        "{:?}",
+        read.notes
+    );
     let read = read_recording_with(&path, None, &options(BadSamples::Drop)).expect("dropped");
     // Rows 0..2999 (3000 rows) are the longest stretch; 3000..4499 is 1499 rows.
     assert_eq!(read.recording.time_s.len(), 2999);
-    assert!(read.notes[0].contains("kept lines 2 … 3000"), "{:?}", read.notes);
+    assert!(
+        read.notes[0].contains("kept lines 2 … 3000"),
+        "{:?}",
+        read.notes
+    );
     // A run of bad samples longer than a revolution (410 samples at 1500 rpm) is not
     // invented by interpolation.
-    let path = put(&dir, "long.csv", &mark("1e300", &(1000..1500).collect::<Vec<_>>()));
+    let path = put(
+        &dir,
+        "long.csv",
+        &mark("1e300", &(1000..1500).collect::<Vec<_>>()),
+    );
     put(&dir, "long.toml", SIDECAR);
     let e = read_recording_with(&path, None, &options(BadSamples::Interpolate))
         .expect_err("too long to interpolate");
@@ -439,11 +489,13 @@ fn bad_samples_are_reported_and_handled() {
 #[test]
 fn sidecar_is_toml_and_checked_against_the_data() {
     let good = csv(200);
-    let inline = format!(
-        "{SIDECAR}sensors = {{ crank = {{ kind = \"encoder\", lines_per_rev = 360 }} }}\n"
-    );
+    let inline =
+        format!("{SIDECAR}sensors = {{ crank = {{ kind = \"encoder\", lines_per_rev = 360 }} }}\n");
     let (_, r) = read("inline", &good, &inline, None);
-    assert_eq!(r.expect("inline tables").meta.sensors["crank"].lines_per_rev, Some(360));
+    assert_eq!(
+        r.expect("inline tables").meta.sensors["crank"].lines_per_rev,
+        Some(360)
+    );
     for t in ["-300", "-273.16", "301"] {
         let e = rejects(
             &format!("temp{t}"),
@@ -455,7 +507,12 @@ fn sidecar_is_toml_and_checked_against_the_data() {
         );
         assert_eq!(e.key.as_deref(), Some("temperature_c"));
     }
-    let (_, r) = read("temp-ok", &good, &format!("{SIDECAR}temperature_c = -40\n"), None);
+    let (_, r) = read(
+        "temp-ok",
+        &good,
+        &format!("{SIDECAR}temperature_c = -40\n"),
+        None,
+    );
     assert!(r.is_ok());
     let e = rejects(
         "speed",
@@ -467,6 +524,11 @@ fn sidecar_is_toml_and_checked_against_the_data() {
     );
     assert!(e.to_string().contains("is 1500.0 rpm") && e.to_string().contains("run-a.csv"));
     // Within 10 %: a bench holds its speed to 1–2 %.
-    let (_, r) = read("speed-ok", &good, &SIDECAR.replace("1500.0", "1600.0"), None);
+    let (_, r) = read(
+        "speed-ok",
+        &good,
+        &SIDECAR.replace("1500.0", "1600.0"),
+        None,
+    );
     assert!(r.is_ok());
 }

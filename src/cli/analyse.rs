@@ -11,8 +11,7 @@ use torsim::signal::{Analysis, StationAnalysis, analyse};
 
 /// Parses `--bad-samples`: `refuse`, `interpolate` or `drop` (issue 13).
 pub fn parse_bad_samples(text: &str) -> Result<BadSamples, String> {
-    BadSamples::parse(text)
-        .ok_or_else(|| format!("`{text}` is none of refuse, interpolate, drop"))
+    BadSamples::parse(text).ok_or_else(|| format!("`{text}` is none of refuse, interpolate, drop"))
 }
 
 /// Runs the command.

@@ -59,13 +59,17 @@ pub enum Reason {
         needed: f64,
     },
     /// Bytes that are not UTF-8.
-    #[error("invalid UTF-8 at byte {offset} (the file must be UTF-8 text; a leading BOM is allowed)")]
+    #[error(
+        "invalid UTF-8 at byte {offset} (the file must be UTF-8 text; a leading BOM is allowed)"
+    )]
     InvalidUtf8 {
         /// 0-based byte offset of the first invalid byte in the file.
         offset: usize,
     },
     /// More data rows than [`crate::limits::Limits::max_samples`].
-    #[error("more than {limit} samples per channel (limit `max_samples`; raise it with --max-samples)")]
+    #[error(
+        "more than {limit} samples per channel (limit `max_samples`; raise it with --max-samples)"
+    )]
     TooManySamples {
         /// The limit.
         limit: usize,

@@ -12,8 +12,8 @@ pub mod timing;
 pub mod types;
 pub mod write;
 
-pub use error::{Reason, RecordingError};
 pub use bad_samples::BadSamples;
+pub use error::{Reason, RecordingError};
 pub use read::{
     ReadOptions, ReadOutcome, parse_recording, parse_recording_with, read_recording,
     read_recording_with, sidecar_path,

@@ -132,8 +132,7 @@ pub fn parse_recording(
     meta: RecordingMeta,
     node_names: Option<&[String]>,
 ) -> Result<Recording, RecordingError> {
-    parse_recording_with(text, file, meta, node_names, &ReadOptions::default())
-        .map(|r| r.recording)
+    parse_recording_with(text, file, meta, node_names, &ReadOptions::default()).map(|r| r.recording)
 }
 
 /// Parses a recording's CSV text with its sidecar already read. See

@@ -67,7 +67,12 @@ impl Ctx<'_> {
             .map(|(k, item)| (item, k.span().or_else(|| item.span())))
     }
 
-    fn allow(&self, table: &dyn TableLike, path: &str, known: &[&str]) -> Result<(), RecordingError> {
+    fn allow(
+        &self,
+        table: &dyn TableLike,
+        path: &str,
+        known: &[&str],
+    ) -> Result<(), RecordingError> {
         for (key, _) in table.iter() {
             if !known.contains(&key) {
                 let span = table.key(key).and_then(|k| k.span());
@@ -82,7 +87,12 @@ impl Ctx<'_> {
         Ok(())
     }
 
-    fn number(&self, table: &dyn TableLike, key: &str, path: &str) -> Result<Option<f64>, RecordingError> {
+    fn number(
+        &self,
+        table: &dyn TableLike,
+        key: &str,
+        path: &str,
+    ) -> Result<Option<f64>, RecordingError> {
         let Some((item, span)) = self.get(table, key) else {
             return Ok(None);
         };
@@ -113,7 +123,12 @@ impl Ctx<'_> {
             .ok_or_else(|| self.err(path, span, Reason::BadValue("expected a string".into())))
     }
 
-    fn integer(&self, table: &dyn TableLike, key: &str, path: &str) -> Result<Option<i64>, RecordingError> {
+    fn integer(
+        &self,
+        table: &dyn TableLike,
+        key: &str,
+        path: &str,
+    ) -> Result<Option<i64>, RecordingError> {
         let Some((item, span)) = self.get(table, key) else {
             return Ok(None);
         };
@@ -175,7 +190,10 @@ pub fn parse_sidecar(text: &str, file: &str) -> Result<RecordingMeta, RecordingE
         return Err(cx.bad(root, "load", format!("{}: must be within 0 … 1", meta.load)));
     }
     meta.temperature_c = cx.number(root, "temperature_c", "temperature_c")?;
-    if let Some(t) = meta.temperature_c.filter(|t| !(ABSOLUTE_ZERO_C..=MAX_TEMPERATURE_C).contains(t)) {
+    if let Some(t) = meta
+        .temperature_c
+        .filter(|t| !(ABSOLUTE_ZERO_C..=MAX_TEMPERATURE_C).contains(t))
+    {
         return Err(cx.bad(
             root,
             "temperature_c",

@@ -146,9 +146,9 @@ pub fn printed_resolution(field: &str) -> f64 {
         Some(i) => (&field[..i], field[i + 1..].parse::<i32>().unwrap_or(0)),
         None => (field, 0),
     };
-    let decimals = mantissa
-        .find('.')
-        .map_or(0, |i| mantissa[i + 1..].bytes().filter(u8::is_ascii_digit).count());
+    let decimals = mantissa.find('.').map_or(0, |i| {
+        mantissa[i + 1..].bytes().filter(u8::is_ascii_digit).count()
+    });
     10f64.powi(exponent.saturating_sub(decimals.min(400) as i32))
 }
 

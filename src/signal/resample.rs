@@ -129,7 +129,10 @@ pub fn angle_grid(
         });
     }
     let dt = uniform_interval(time_s)?;
-    if let Some(k) = reference_rpm.iter().position(|&n| !(n > 0.0 && n.is_finite())) {
+    if let Some(k) = reference_rpm
+        .iter()
+        .position(|&n| !(n > 0.0 && n.is_finite()))
+    {
         return Err(SignalError::NonPositiveSpeed { time_s: time_s[k] });
     }
     let theta = reference_angle_rev(reference_rpm, dt);
@@ -139,7 +142,7 @@ pub fn angle_grid(
     // terabytes. Checked on the angle itself, which is finite or not, before any cast.
     let limit = crate::limits::current().max_grid_points;
     let points = (hi - lo) * samples_per_rev as f64;
-    if !(points <= limit as f64) {
+    if points.is_nan() || points > limit as f64 {
         return Err(SignalError::GridTooLarge {
             points,
             limit,
