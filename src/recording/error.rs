@@ -67,9 +67,7 @@ pub enum Reason {
         offset: usize,
     },
     /// More data rows than [`crate::limits::Limits::max_samples`].
-    #[error(
-        "more than {limit} samples per channel (limit `max_samples`; raise it with --max-samples)"
-    )]
+    #[error("more than {limit} samples per channel (the limit `max_samples` of torsim::limits)")]
     TooManySamples {
         /// The limit.
         limit: usize,
