@@ -199,3 +199,96 @@ fn stft_order_track_follows_the_speed() {
         assert!((a - 5.0).abs() < 0.1, "window {i}: order-1 track {a} rpm");
     }
 }
+
+/// Issue 13: a DAQ's clock (starting at 187.648 s, ±20 µs of jitter, time stamps printed
+/// to µs) gives the order amplitudes of the exact uniform recording. The samples are the
+/// signal at their true (jittered) times; the reader resamples them onto the fitted grid
+/// by a local cubic, whose error is about (δ/Δt)(2π/P)⁴/12 of an amplitude for P samples
+/// per period: at most 0.2 × (2π/17)⁴/12 = 3e-4 for order 12 (600 Hz at 10 240 Hz). The
+/// µs rounding of the stamps adds phase noise of ω·0.3 µs rms that averages out over
+/// 10 240 samples. Tolerance: 1e-3 of each amplitude, 3× the cubic's bound.
+#[test]
+fn a_jittered_daq_clock_gives_the_exact_orders() {
+    let lines = [(2.0, 5.0), (4.0, 5.0), (6.0, 3.0), (12.0, 2.0)];
+    // n(t) in time, orders of 50 rev/s: the same continuous signal for both recordings.
+    let n = |t: f64| {
+        3000.0
+            + lines
+                .iter()
+                .map(|(q, a)| a * (2.0 * PI * q * 50.0 * (t - 187.648) + q).cos())
+                .sum::<f64>()
+    };
+    let rate = 10240.0;
+    let rows = 10240;
+    let exact_t: Vec<f64> = (0..rows).map(|k| 187.648 + k as f64 / rate).collect();
+    let exact_n: Vec<f64> = exact_t.iter().map(|&t| n(t)).collect();
+    let exact = analyse(&recording(
+        RunKind::Steady,
+        exact_t.clone(),
+        vec![("crank", exact_n)],
+    ))
+    .expect("exact");
+    // Deterministic jitter within ±20 µs.
+    let jitter = |k: usize| 20e-6 * (((k * 7919) % 2001) as f64 / 1000.0 - 1.0);
+    let mut text = String::from("time_s,crank_rpm\n");
+    for (k, t) in exact_t.iter().enumerate() {
+        let true_t = t + jitter(k);
+        text += &format!("{true_t:.6},{}\n", n(true_t));
+    }
+    let dir = synth::temp_dir("daq-clock");
+    let path = synth::put(&dir, "daq.csv", &text);
+    synth::put(
+        &dir,
+        "daq.toml",
+        "format = 1\nkind = \"steady\"\nreference = \"crank\"\n",
+    );
+    let read = torsim::recording::read_recording_with(&path, None, &Default::default())
+        .expect("a jittered DAQ clock reads");
+    assert!(read.notes[0].contains("resampled"), "{:?}", read.notes);
+    let jittered = analyse(&read.recording).expect("jittered");
+    let (a, b) = (&exact.stations[0].orders, &jittered.stations[0].orders);
+    for (q, amplitude) in lines {
+        let find = |o: &[torsim::signal::OrderAmplitude]| {
+            o.iter()
+                .find(|o| (o.order - q).abs() < 1e-9)
+                .map(|o| o.amplitude)
+                .expect("order")
+        };
+        let (x, y) = (find(a), find(b));
+        eprintln!("order {q}: exact {x:.6}, jittered {y:.6}");
+        assert!((y - x).abs() < 1e-3 * amplitude, "order {q}: {x} vs {y}");
+    }
+}
+
+/// Issue 13: one over-range speed sample (1e300, 9.9e37, 1e15) cannot make the angle
+/// grid allocate: it is refused against `max_grid_points`, never a panic or an abort.
+#[test]
+fn angle_grid_is_bounded() {
+    let t: Vec<f64> = (0..4096).map(|k| k as f64 / 2048.0).collect();
+    for spike in [1e300, 9.9e37, 1e15, 1e12] {
+        let mut n = vec![3000.0; t.len()];
+        n[2000] = spike;
+        let e = torsim::signal::angle_grid(&t, &n, 256, 2.0).expect_err("bounded");
+        assert!(
+            matches!(e, torsim::signal::SignalError::GridTooLarge { .. }),
+            "{spike}: {e}"
+        );
+        assert!(e.to_string().contains("max_grid_points"), "{e}");
+    }
+}
+
+/// Issue 13: "only 1.63 working cycles … need at least 1" contradicted itself: the
+/// message now says what is needed in the same units, and why.
+#[test]
+fn too_short_says_what_is_needed() {
+    // 2.07 cycles of a 4-stroke engine at 3000 rpm (50 rev/s, 170 samples at 2048 Hz).
+    let t: Vec<f64> = (0..170).map(|k| k as f64 / 2048.0).collect();
+    let n = vec![3000.0; t.len()];
+    let e = torsim::signal::angle_grid(&t, &n, 256, 2.0).expect_err("too short");
+    let text = e.to_string();
+    assert!(text.contains("16-sample margins"), "{text}");
+    let torsim::signal::SignalError::TooShort { cycles, needed, .. } = e else {
+        panic!("{e}")
+    };
+    assert!(cycles < needed, "{text}");
+}

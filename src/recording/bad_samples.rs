@@ -201,8 +201,8 @@ pub fn longest_clean_stretch(rows: usize, bad: &[BadSample]) -> (usize, usize) {
     let mut is_bad = vec![false; rows];
     bad.iter().for_each(|b| is_bad[b.row] = true);
     let (mut best, mut start) = ((0, 0), 0);
-    for k in 0..=rows {
-        if k == rows || is_bad[k] {
+    for (k, &bad) in is_bad.iter().chain(std::iter::once(&true)).enumerate() {
+        if bad {
             if k - start > best.1 - best.0 {
                 best = (start, k);
             }

@@ -142,7 +142,7 @@ pub fn angle_grid(
     // terabytes. Checked on the angle itself, which is finite or not, before any cast.
     let limit = crate::limits::current().max_grid_points;
     let points = (hi - lo) * samples_per_rev as f64;
-    if !(points <= limit as f64) {
+    if points.is_nan() || points > limit as f64 {
         return Err(SignalError::GridTooLarge {
             points,
             limit,
