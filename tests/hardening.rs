@@ -56,15 +56,15 @@ fn check(case: &Case) -> Option<String> {
     if has_nan(&stderr) && !typed_nan || has_nan(&out.stdout) {
         wrong.push("a NaN in the output".into());
     }
-    if let Some(after) = case.after {
-        if let Err(e) = std::panic::catch_unwind(|| after(&dir)) {
-            let text = e
-                .downcast_ref::<String>()
-                .cloned()
-                .or_else(|| e.downcast_ref::<&str>().map(|s| s.to_string()))
-                .unwrap_or_default();
-            wrong.push(format!("after: {text}"));
-        }
+    if let Some(after) = case.after
+        && let Err(e) = std::panic::catch_unwind(|| after(&dir))
+    {
+        let text = e
+            .downcast_ref::<String>()
+            .cloned()
+            .or_else(|| e.downcast_ref::<&str>().map(|s| s.to_string()))
+            .unwrap_or_default();
+        wrong.push(format!("after: {text}"));
     }
     let _ = std::fs::remove_dir_all(&dir);
     (!wrong.is_empty()).then(|| {

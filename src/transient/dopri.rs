@@ -158,7 +158,8 @@ impl Dopri5 {
                 sum += r * r;
             }
             let err = (sum / n as f64).sqrt();
-            if !(err <= 1.0) {
+            // A NaN error counts as a failure too.
+            if err.is_nan() || err > 1.0 {
                 self.worst_state = self.worst_component(h);
             }
             if !err.is_finite() {

@@ -228,14 +228,17 @@ pub fn simulate_observed(
         },
         RunKind::Steady { .. } => options,
     };
+    let course = Course {
+        plant: &plant,
+        profile: &profile,
+        budget: &budget,
+    };
     let settling = settle(
-        &plant,
-        &profile,
+        course,
         &mut mass,
         &mut solver,
         cycle_s(from_rpm),
         settle_options,
-        &budget,
         &mut |f| observer(Event::Progress(f)),
     )?;
     let t0 = solver.t();
@@ -284,18 +287,29 @@ pub fn simulate_observed(
     Ok(sim)
 }
 
+/// What settling integrates: the plant, its speed profile and the run's step budget.
+#[derive(Clone, Copy)]
+struct Course<'a> {
+    plant: &'a Plant,
+    profile: &'a SpeedProfile,
+    budget: &'a StepBudget,
+}
+
 /// Integrates whole working cycles until the cycle-to-cycle change of the speeds is below
 /// tolerance (at least three cycles).
 fn settle(
-    plant: &Plant,
-    profile: &SpeedProfile,
+    course: Course,
     mass: &mut [f64],
     solver: &mut Stepper,
     cycle_s: f64,
     options: RunOptions,
-    budget: &StepBudget,
     progress: &mut dyn FnMut(f64) -> bool,
 ) -> Result<Settling, TransientError> {
+    let Course {
+        plant,
+        profile,
+        budget,
+    } = course;
     let n = plant.n_dof;
     let mut previous: Vec<f64> = solver.y()[n..2 * n].to_vec();
     let mut settling = Settling {
