@@ -26,19 +26,26 @@ fn lock() -> MutexGuard<'static, Registry> {
     REGISTRY.lock().unwrap_or_else(|p| p.into_inner())
 }
 
-/// Runs `create` with `path` registered, under the registry's lock: the file it creates
-/// is removed by [`remove_temporaries`] from then on. Fails when the process is ending.
-pub(crate) fn create_registered<T>(
-    path: &Path,
-    create: impl FnOnce() -> std::io::Result<T>,
-) -> std::io::Result<T> {
-    let mut registry = lock();
+/// The registry, locked, unless the process is ending (a signal arrived): then no file
+/// may be created or renamed any more.
+fn open_registry() -> std::io::Result<MutexGuard<'static, Registry>> {
+    let registry = lock();
     if registry.closed {
         return Err(std::io::Error::new(
             std::io::ErrorKind::Interrupted,
             "the process is ending (signal received)",
         ));
     }
+    Ok(registry)
+}
+
+/// Runs `create` with `path` registered, under the registry's lock: the file it creates
+/// is removed by [`remove_temporaries`] from then on. Fails when the process is ending.
+pub(crate) fn create_registered<T>(
+    path: &Path,
+    create: impl FnOnce() -> std::io::Result<T>,
+) -> std::io::Result<T> {
+    let mut registry = open_registry()?;
     let value = create()?;
     registry.paths.push(path.to_path_buf());
     Ok(value)
@@ -50,13 +57,7 @@ pub(crate) fn finish_registered<T>(
     path: &Path,
     finish: impl FnOnce() -> std::io::Result<T>,
 ) -> std::io::Result<T> {
-    let mut registry = lock();
-    if registry.closed {
-        return Err(std::io::Error::new(
-            std::io::ErrorKind::Interrupted,
-            "the process is ending (signal received)",
-        ));
-    }
+    let mut registry = open_registry()?;
     let result = finish();
     registry.paths.retain(|p| p != path);
     result

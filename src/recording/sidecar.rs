@@ -146,16 +146,21 @@ impl Ctx<'_> {
     }
 }
 
-/// Parses a sidecar's text; `file` names it in errors.
-pub fn parse_sidecar(text: &str, file: &str) -> Result<RecordingMeta, RecordingError> {
-    let cx = Ctx { text, file };
-    let doc = Document::parse(text).map_err(|e| {
+/// The sidecar's TOML document; a syntax error names the file and its line.
+fn parse_document<'t>(text: &'t str, file: &str) -> Result<Document<&'t str>, RecordingError> {
+    Document::parse(text).map_err(|e| {
         let err = RecordingError::new(file, Reason::Toml(e.message().trim().to_string()));
         match e.span() {
             Some(s) => err.at_line(line_of(text, s.start)),
             None => err,
         }
-    })?;
+    })
+}
+
+/// Parses a sidecar's text; `file` names it in errors.
+pub fn parse_sidecar(text: &str, file: &str) -> Result<RecordingMeta, RecordingError> {
+    let cx = Ctx { text, file };
+    let doc = parse_document(text, file)?;
     let root = doc.as_table();
     cx.allow(root, "", &KEYS)?;
     let missing = |key: &str| RecordingError::new(file, Reason::MissingKey).at_key(key);
@@ -231,13 +236,7 @@ pub fn parse_sidecar(text: &str, file: &str) -> Result<RecordingMeta, RecordingE
 /// Errors name the key and its line.
 pub fn parse_csv_check(text: &str, file: &str) -> Result<Option<CsvCheck>, RecordingError> {
     let cx = Ctx { text, file };
-    let doc = Document::parse(text).map_err(|e| {
-        let err = RecordingError::new(file, Reason::Toml(e.message().trim().to_string()));
-        match e.span() {
-            Some(s) => err.at_line(line_of(text, s.start)),
-            None => err,
-        }
-    })?;
+    let doc = parse_document(text, file)?;
     let root = doc.as_table();
     let sha256 = cx.string(root, "csv_sha256", "csv_sha256")?;
     let rows = cx.integer(root, "csv_rows", "csv_rows")?;
