@@ -504,6 +504,20 @@ fn wrong_but_silent() -> Vec<Case> {
             after: None,
         },
         Case {
+            name: "node-name-with-newline",
+            setup: |d| {
+                let m = model(
+                    d,
+                    "test-rig-70sh",
+                    &[("\"middle_flange\"", "\"middle\\nflange\"")],
+                );
+                args(&["modes", &m])
+            },
+            exit: 2,
+            words: &["m.toml", "U+000A"],
+            after: None,
+        },
+        Case {
             name: "node-name-only-spaces",
             setup: |d| {
                 let m = model(d, "test-rig-70sh", &[("\"middle_flange\"", "\"   \"")]);
@@ -702,6 +716,19 @@ fn vague_errors() -> Vec<Case> {
             setup: |_| args(&["analyse", "nope.csv"]),
             exit: 2,
             words: &["nope.csv"],
+            after: None,
+        },
+        Case {
+            name: "under-two-cycles-after-the-margins",
+            setup: |d| {
+                let b = Bench {
+                    duration_s: 0.0815,
+                    ..Bench::default()
+                };
+                args(&["analyse", &recording(d, "r", &b, |_| {})])
+            },
+            exit: 2,
+            words: &["r.csv", "working cycles", "margins"],
             after: None,
         },
         Case {
