@@ -76,9 +76,11 @@ fn options(a: &DiagnoseArgs) -> Result<DiagnoseOptions, CliError> {
         options.threads = threads;
     }
     if let Some(q) = a.max_order {
-        if !(q.is_finite() && q > 0.0 && q <= 100.0) {
+        // The same bound as every other order (`limits::max_order`, 100 by default).
+        let limit = torsim::limits::current().max_order;
+        if !(q.is_finite() && q > 0.0 && q <= limit) {
             return Err(CliError::input(anyhow::anyhow!(
-                "--max-order {q}: must be within 0 … 100 (exclusive of 0)"
+                "--max-order {q}: must be within 0 … {limit} (exclusive of 0)"
             )));
         }
         options.max_order = q;
