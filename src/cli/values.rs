@@ -20,20 +20,18 @@ fn shown(value: f64) -> String {
     }
 }
 
-/// A shaft speed, rpm: finite, > 0 and at most `limits::current().max_speed_rpm`, the
-/// last checked by [`limits::check_value`] as in `simulate`, so the message names the
-/// flag that raises it.
-pub fn speed_rpm(flag: &'static str, value: f64) -> Result<f64, CliError> {
+/// A shaft speed, rpm: finite, > 0 and at most `limits::current().max_speed_rpm`.
+pub fn speed_rpm(flag: &str, value: f64) -> Result<f64, CliError> {
     let max = limits::current().max_speed_rpm;
-    if !(value.is_finite() && value > 0.0) {
-        return Err(refuse(
+    if value.is_finite() && value > 0.0 && value <= max {
+        Ok(value)
+    } else {
+        Err(refuse(
             flag,
             value,
             format!("a speed must be finite, > 0 and at most {max} rpm (limit max_speed_rpm)"),
-        ));
+        ))
     }
-    limits::check_value(flag, value, max, Some("--max-speed-rpm")).map_err(CliError::input)?;
-    Ok(value)
 }
 
 /// The highest vibration frequency any analysis asks about, Hz: the highest order at the
