@@ -290,6 +290,25 @@ fn assemble(parts: Parts) -> Model {
         })
         .collect();
     let node = |i: usize| inertias[i % inertias.len()].name.clone();
+    // Referred to one shaft, a gear train multiplies inertias by the square of its
+    // ratio product. Each gear is turned the way that walks the running product back
+    // towards 1, which keeps it within 0.1…10: referred inertias then stay within
+    // 1e6 (the inertia range) × 1e2² = 1e10 < 1e12 of each other, inside the
+    // round-off bound validate_scale.rs enforces.
+    let mut decades = 0.0_f64;
+    let links: Vec<_> = links
+        .into_iter()
+        .map(|(word, mut kind)| {
+            if let ConnectionKind::Gear(gear) = &mut kind {
+                let step = gear.ratio.abs().log10();
+                if (decades + step).abs() > (decades - step).abs() {
+                    gear.ratio = 1.0 / gear.ratio;
+                }
+                decades += gear.ratio.abs().log10();
+            }
+            (word, kind)
+        })
+        .collect();
     let mut connections: Vec<Connection> = links
         .into_iter()
         .enumerate()
