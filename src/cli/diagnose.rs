@@ -355,6 +355,8 @@ mod tests {
             parameter_count: 1,
             signature: String::new(),
             verified: true,
+            rejected: None,
+            rejected_steps: Vec::new(),
         };
         let mismatch = |z: f64| Mismatch {
             recording: "Regime A".into(),

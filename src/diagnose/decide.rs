@@ -5,12 +5,18 @@
 //! amplitudes. Then:
 //! - `none` when the user's model already fits the held-out data within the noise
 //!   (χ²/N ≤ [`NONE_CHI2`]);
-//! - an effect (one verified in the time domain, [`super::screen`]) when its score beats
-//!   the plain-parameter fit's by [`EFFECT_MARGIN`]
-//!   (relative) — new physics must earn its place on data the fit did not see;
-//! - otherwise `parameter_error`, naming the plain parameter the fit moved most.
+//! - an effect (one verified in the time domain, [`super::screen`], and not rejected,
+//!   [`super::trial`]) when its score beats the plain-parameter fit's by [`EFFECT_MARGIN`]
+//!   (relative) — new physics must earn its place on data the fit did not see — and its
+//!   held-out χ²/N improves on the user's model's ([`guard::improves`]);
+//! - otherwise `parameter_error`, naming the plain parameter the fit moved most, when the
+//!   recalibration improves on the user's model's held-out χ²/N the same way;
+//! - otherwise `none` (issue 14: a verdict never has a held-out fit worse than the user's
+//!   model), saying that the model misfits but that nothing tried improves the held-out
+//!   data, with the worst mismatches ([`guard::misfit_none`]).
 
 use super::context::{Context, Evaluated};
+use super::guard;
 use super::holdout::{held_out_labels, roles};
 use super::observe::Regime;
 use super::places::{SAME_Z, equivalent_places};
@@ -43,13 +49,16 @@ pub fn fitted_score(cx: &Context, e: &Evaluated, k: usize) -> f64 {
 }
 
 /// The report of a finished diagnosis: `screened` are the candidates fitted (only the
-/// verified ones can be the verdict), `not_fitted` those left out and why.
+/// verified, not rejected ones can be the verdict), `not_fitted` those left out and why,
+/// `plain_rejected` the steps of the plain fit that could not be simulated.
+#[allow(clippy::too_many_arguments)]
 pub fn report(
     cx: &Context,
     baseline: &Evaluated,
     plain: &Evaluated,
     screened: &[Screened],
     not_fitted: &[(String, String)],
+    plain_rejected: &[String],
     single: Option<(usize, f64, f64)>,
     elapsed_s: f64,
 ) -> Report {
@@ -86,22 +95,26 @@ pub fn report(
                 residual_fitted: cx.chi2(e, false),
                 parameter_count: k_plain + 1,
                 signature: format!("{}: {}", c.name(), s.note),
-                verified: s.verified,
+                verified: s.verified && s.rejected.is_none(),
+                rejected: s.rejected.clone(),
+                rejected_steps: s.rejected_steps.clone(),
             },
             evaluated: e,
             candidate: c,
         });
     }
-    // Keep the best place of each effect, a verified one before any only screened.
+    // Keep the best place of each effect, a verified one before any only screened, and
+    // every rejected one (last, each with its reason).
     let rank = |a: &super::report::Candidate, b: &super::report::Candidate| {
-        b.verified
-            .cmp(&a.verified)
+        (a.rejected.is_some())
+            .cmp(&b.rejected.is_some())
+            .then(b.verified.cmp(&a.verified))
             .then(a.score.total_cmp(&b.score))
     };
     candidates.sort_by(|a, b| rank(&a.out, &b.out));
     let mut seen = Vec::new();
     candidates.retain(|c| {
-        let new = !seen.contains(&c.out.effect);
+        let new = c.out.rejected.is_some() || !seen.contains(&c.out.effect);
         seen.push(c.out.effect.clone());
         new
     });
@@ -115,6 +128,8 @@ pub fn report(
         parameter_count: k_plain,
         signature: "plain parameters only".into(),
         verified: true,
+        rejected: None,
+        rejected_steps: plain_rejected.to_vec(),
     };
     let none_row = super::report::Candidate {
         effect: "none".into(),
@@ -126,8 +141,14 @@ pub fn report(
         parameter_count: 0,
         signature: "the user's model as it is".into(),
         verified: true,
+        rejected: None,
+        rejected_steps: Vec::new(),
     };
-    let best = candidates.first().filter(|c| c.out.verified);
+    let best = candidates
+        .first()
+        .filter(|c| c.out.verified && c.out.rejected.is_none());
+    let n_held = guard::n_held(cx);
+    let plain_after = cx.chi2(plain, true);
     let (verdict, after_model): (Verdict, &Evaluated) = if before <= NONE_CHI2 {
         (
             Verdict {
@@ -142,7 +163,10 @@ pub fn report(
             },
             baseline,
         )
-    } else if let Some(b) = best.filter(|b| b.out.score < (1.0 - EFFECT_MARGIN) * plain_score) {
+    } else if let Some(b) = best.filter(|b| {
+        b.out.score < (1.0 - EFFECT_MARGIN) * plain_score
+            && guard::improves(before, b.out.residual_after, n_held)
+    }) {
         let mut parameters = BTreeMap::new();
         for (k, v) in &b.out.parameters {
             if !k.starts_with("scale.") {
@@ -183,6 +207,12 @@ pub fn report(
                 equivalent_places: equivalent,
             },
             b.evaluated,
+        )
+    } else if !guard::improves(before, plain_after, n_held) {
+        let tried = best.map(|b| (b.name.as_str(), b.out.residual_after));
+        (
+            guard::misfit_none(cx, baseline, before, NONE_CHI2, plain_after, tried),
+            baseline,
         )
     } else {
         // Name the parameter that alone explains the most (fitted by itself); its value

@@ -23,8 +23,13 @@
 //!   drift needs a drifting long run ([`drift`]).
 //! - [`restart`]: every candidate the linear model sees also fitted from the user's
 //!   values, where the plain fit has not bent the plain parameters to stand in for it.
-//! - [`decide`]: held-out scoring with a parameter penalty and the verdict; [`places`]
-//!   the places of an effect the recordings cannot tell apart.
+//! - [`trial`]: every model the diagnosis proposes is run there; one that cannot be
+//!   simulated is a rejected step (the fit keeps its point) or a rejected candidate (listed
+//!   with its reason, never the verdict). Only the user's own model failing is an error.
+//! - [`decide`]: held-out scoring with a parameter penalty and the verdict; [`guard`]
+//!   keeps every verdict at least as good as the user's model on held-out data (else
+//!   `none`, saying so); [`places`] the places of an effect the recordings cannot tell
+//!   apart.
 //! - [`report`]: the JSON of the spec; [`html`] the page for a person.
 
 pub mod accept;
@@ -35,6 +40,7 @@ pub mod drift;
 pub mod fit;
 pub mod forward;
 pub mod forward_runup;
+pub mod guard;
 pub mod holdout;
 pub mod html;
 pub mod observe;
@@ -53,6 +59,7 @@ pub mod surrogate;
 mod svg;
 #[cfg(test)]
 mod tests;
+pub mod trial;
 
 pub use html::report_html;
 pub use report::Report;

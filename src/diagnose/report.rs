@@ -155,6 +155,17 @@ pub struct Candidate {
     /// Extension: scored in the time domain on every recording (only such a candidate can
     /// be the verdict); `false`: only screened (its numbers are the screening's estimate).
     pub verified: bool,
+    /// Extension (issue 14): why the candidate was rejected — its screening or its
+    /// verification could not be simulated, e.g. `"verification: simulating `Run-up`: the
+    /// reference speed is not > 0 at 0.34 s"`. A rejected candidate is never the verdict;
+    /// its numbers are those of the last point it reached (the plain fit it started from
+    /// when its screening failed). Left out of the JSON when it was not rejected.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rejected: Option<String>,
+    /// Extension (issue 14): steps of its fits that could not be simulated and were not
+    /// taken (the fit kept its previous point), each with the reason. Left out when none.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub rejected_steps: Vec<String>,
 }
 
 /// Extension: an effect not fitted, and why (its signature is absent from the data).

@@ -16,6 +16,7 @@
 use super::DiagnoseError;
 use super::context::{Context, Evaluated};
 use super::screen::{Screened, linear_sees};
+use super::trial;
 use crate::synth::Effect;
 
 /// Levenberg–Marquardt steps of a second start: it only has to reach the right valley
@@ -33,7 +34,9 @@ const TIE: f64 = 0.05;
 /// Fits every candidate of `screened` the linear model represents from `baseline` (the
 /// user's model in the time domain), and replaces its screening with that fit where the
 /// time domain scores it better (`score`: with the candidate's parameters;
-/// `plain_score`: the plain parameters alone, on the surrogate).
+/// `plain_score`: the plain parameters alone, on the surrogate). A second start that
+/// cannot be simulated is a rejected step of that candidate (it keeps its first start),
+/// not a rejected candidate: its first start ran. Only cancelling is an error.
 pub fn second_starts(
     cx: &Context,
     baseline: &Evaluated,
@@ -43,9 +46,17 @@ pub fn second_starts(
     progress: &mut dyn FnMut(usize, usize, &str) -> Result<(), DiagnoseError>,
 ) -> Result<(), DiagnoseError> {
     let all: Vec<usize> = (0..cx.plain.len()).collect();
-    let reference = plain_score(&cx.propose_within(baseline, None, &all, ITERATIONS)?);
+    // Without the plain parameters' own second start there is nothing to rank against:
+    // every candidate keeps its first start.
+    let Ok(reference) = cx.propose_within(baseline, None, &all, ITERATIONS) else {
+        return Ok(());
+    };
+    let reference = plain_score(&reference);
     let linear: Vec<usize> = (0..screened.len())
-        .filter(|i| !screened[*i].verified && linear_sees(screened[*i].candidate.effect))
+        .filter(|i| {
+            let s = &screened[*i];
+            !s.verified && s.rejected.is_none() && linear_sees(s.candidate.effect)
+        })
         .collect();
     let mut proposals: Vec<(usize, Evaluated, f64)> = Vec::new();
     for (k, i) in linear.iter().enumerate() {
@@ -70,8 +81,17 @@ pub fn second_starts(
             None if effects.len() >= CHECKED => continue,
             None => effects.push((effect, s)),
         }
-        let Ok(run) = cx.evaluate(e.model, e.joint, e.factors, e.value) else {
-            continue;
+        let c = screened[i].candidate.clone();
+        let run = match trial::evaluate(cx, Some(&c), e.model, e.joint, e.factors, e.value) {
+            Ok(run) => run,
+            Err(e) if trial::is_fatal(&e) => return Err(e),
+            // A second start that cannot be run is a rejected step: the candidate keeps
+            // its first start, which did run.
+            Err(e) => {
+                let why = trial::reason("second start from the user's values", &e);
+                screened[i].rejected_steps.push(why);
+                continue;
+            }
         };
         let s = &mut screened[i];
         if score(&run) < score(&s.evaluated) {

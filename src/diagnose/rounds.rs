@@ -8,6 +8,7 @@ use super::context::{Context, Evaluated};
 use super::fit::{levenberg_marquardt, parallel_map};
 use super::sensor;
 use super::surrogate::{ratios, scaled};
+use super::trial;
 use crate::synth::Effect;
 
 /// Rounds stop when χ²/N on the fitted data improves by less than this fraction.
@@ -20,29 +21,50 @@ const ROUND_GAIN: f64 = 0.005;
 const SEARCH_GRID: usize = 4;
 const SEARCH_HALVINGS: usize = 1;
 
+/// Where a fit ended, and the steps it rejected on the way (why each could not be run).
+#[derive(Debug, Clone)]
+pub struct Stepped {
+    /// The best point reached (the start when every step was rejected).
+    pub best: Evaluated,
+    /// `"round 2: simulating `Run-up`: …"`, one per rejected step.
+    pub rejected: Vec<String>,
+}
+
 impl Context<'_> {
     /// Surrogate fits (every plain factor free, and the candidate's parameter) and
     /// time-domain runs, alternating from `start` until χ²/N on the fitted data gains
     /// less than [`ROUND_GAIN`] or `max` rounds are done. `first`: a surrogate proposal
     /// already made from `start`, to be run in the time domain as the first round.
+    ///
+    /// A round whose proposal cannot be made or simulated is a rejected step
+    /// ([`super::trial`]): the previous point is kept, the reason noted, and the rounds
+    /// stop (the next proposal would start from the same point). Never an error.
     pub fn rounds(
         &self,
         start: Evaluated,
         candidate: Option<&Candidate>,
         max: usize,
         first: Option<Evaluated>,
-    ) -> Result<Evaluated, DiagnoseError> {
+    ) -> Stepped {
         let all: Vec<usize> = (0..self.plain.len()).collect();
         // A candidate's first round always counts when it adds the effect.
         let mut adds = candidate.is_some() && start.value.is_none();
         let mut proposal = first;
         let mut best = start;
-        for _ in 0..max {
-            let p = match proposal.take() {
-                Some(p) => p,
-                None => self.propose(&best, candidate, &all)?,
+        let mut rejected = Vec::new();
+        for round in 1..=max {
+            let next = match proposal.take() {
+                Some(p) => Ok(p),
+                None => self.propose(&best, candidate, &all),
+            }
+            .and_then(|p| trial::evaluate(self, candidate, p.model, p.joint, p.factors, p.value));
+            let next = match next {
+                Ok(next) => next,
+                Err(e) => {
+                    rejected.push(trial::reason(&format!("round {round}"), &e));
+                    break;
+                }
             };
-            let next = self.evaluate(p.model, p.joint, p.factors, p.value)?;
             let (old, new) = (self.chi2(&best, false), self.chi2(&next, false));
             if new < old || adds {
                 best = next;
@@ -52,7 +74,7 @@ impl Context<'_> {
                 break;
             }
         }
-        Ok(best)
+        Stepped { best, rejected }
     }
 
     /// Fits a candidate's parameter in the time domain with the plain factors of `at`,
@@ -62,12 +84,14 @@ impl Context<'_> {
     /// rough function of its parameter, where finite differences mislead. A grid a factor
     /// 3 apart ([`SEARCH_GRID`] points), then the bracket around the best halved (in
     /// `ln x`) [`SEARCH_HALVINGS`] times, then the parabola through the last three points.
+    /// A value that cannot be simulated is a rejected step (listed in the result); when
+    /// none can be, the candidate is rejected with a [`DiagnoseError::Simulation`].
     pub fn fit_time_domain(
         &self,
         at: &Evaluated,
         c: &Candidate,
         runs: &[bool],
-    ) -> Result<Evaluated, DiagnoseError> {
+    ) -> Result<Stepped, DiagnoseError> {
         let base = scaled(self.user, &self.plain, &at.factors).map_err(DiagnoseError::Input)?;
         let p = &c.param;
         // The internal coordinate: ln x for a scale-like parameter, else x itself.
@@ -80,15 +104,13 @@ impl Context<'_> {
             (p.hi - p.lo) / 8.0
         };
         let (lo, hi) = (from_x(p.lo), from_x(p.hi));
-        // One value's cost and simulation (`None`: it could not be simulated).
-        let cost_at = |u: f64| -> Option<(f64, f64, Vec<f64>)> {
+        // One value's cost and simulation, or why it could not be simulated.
+        let cost_at = |u: f64| -> Result<(f64, f64, Vec<f64>), DiagnoseError> {
             let value = to_x(u.clamp(lo, hi));
-            let (m, j) = c.apply(&base, value).ok()?;
-            let s = self
-                .simulate(&m, j.as_ref(), Some((runs, &at.simulated)))
-                .ok()?;
+            let (m, j) = c.apply(&base, value).map_err(DiagnoseError::Input)?;
+            let s = trial::simulate(self, Some(c), &m, j.as_ref(), Some((runs, &at.simulated)))?;
             let cost = self.fit_z(&s).iter().map(|z| z * z).sum::<f64>();
-            Some((u, cost, s))
+            Ok((u, cost, s))
         };
         // Values of one stage run side by side, one per thread: a screening often
         // simulates a single long record, which would leave the other threads idle.
@@ -96,9 +118,19 @@ impl Context<'_> {
         let threads = self.options.threads;
         let mut kept: Kept = None;
         let mut tried: Vec<(f64, f64)> = Vec::new();
+        // Values that could not be simulated: rejected steps, with the reason.
+        let failed = std::sync::Mutex::new(Vec::<(f64, DiagnoseError)>::new());
         let stage = |us: &[f64], kept: &mut Kept, tried: &mut Vec<(f64, f64)>| {
             let us: Vec<f64> = us.iter().map(|u| u.clamp(lo, hi)).collect();
-            let results = parallel_map(us.len(), threads, &|k| cost_at(us[k]));
+            let results = parallel_map(us.len(), threads, &|k| {
+                cost_at(us[k])
+                    .map_err(|e| {
+                        if let Ok(mut f) = failed.lock() {
+                            f.push((to_x(us[k]), e));
+                        }
+                    })
+                    .ok()
+            });
             for (u, r) in us.into_iter().zip(results) {
                 tried.push((u, r.as_ref().map_or(f64::INFINITY, |r| r.1)));
                 if let Some(r) = r.filter(|r| kept.as_ref().is_none_or(|k| r.1 < k.1)) {
@@ -141,16 +173,30 @@ impl Context<'_> {
                 );
             }
         }
+        let failed = failed.into_inner().unwrap_or_default();
         let Some((u, _, simulated)) = kept else {
-            return Err(DiagnoseError::Input(format!(
-                "{}: no value of {} could be simulated",
-                c.name(),
-                p.key
-            )));
+            // Every value failed: the candidate is rejected with the first reason (a
+            // simulation's, never mistaken for an absent signature).
+            return Err(match failed.into_iter().next() {
+                Some((_, e @ DiagnoseError::Simulation { .. })) => e,
+                Some((x, e)) => DiagnoseError::Simulation {
+                    label: format!("{} = {x:.4}", p.key),
+                    message: e.to_string(),
+                },
+                None => DiagnoseError::Simulation {
+                    label: c.name(),
+                    message: format!("no value of {} could be simulated", p.key),
+                },
+            });
         };
+        let rejected = failed
+            .iter()
+            .map(|(x, e)| trial::reason(&format!("{} = {x:.4}", p.key), e))
+            .collect();
         let value = to_x(u.clamp(lo, hi));
         let (m, j) = c.apply(&base, value).map_err(DiagnoseError::Input)?;
-        Ok(self.scored(m, j, simulated, at.factors.clone(), Some(value)))
+        let best = self.scored(m, j, simulated, at.factors.clone(), Some(value));
+        Ok(Stepped { best, rejected })
     }
 
     /// Fits a sensor artifact (a tape joint) at `at`: it adds to the measured amplitudes

@@ -55,9 +55,12 @@ pub fn diagnose(
     };
     step(0.1, "simulating the model")?;
     let ones = vec![1.0; cx.plain.len()];
+    // The user's model as given: its failure is the only simulation error (issue 14).
     let baseline = cx.evaluate(model.clone(), None, ones, None)?;
     step(0.2, "fitting the plain parameters")?;
-    let plain_fit = cx.rounds(baseline.clone(), None, PLAIN_ROUNDS, None)?;
+    let fitted = cx.rounds(baseline.clone(), None, PLAIN_ROUNDS, None);
+    let mut plain_rejected = fitted.rejected;
+    let plain_fit = fitted.best;
     let stations: Vec<String> = {
         let mut s: Vec<String> = cx
             .observed
@@ -82,11 +85,13 @@ pub fn diagnose(
             0.3 + 0.2 * k as f64 / list.len() as f64,
             &format!("screening {}", c.name()),
         )?;
-        // A candidate whose model cannot be built or run is left out, not fatal.
+        // A candidate whose signature is absent (or whose model cannot be built) is not
+        // fitted; one whose simulation fails is rejected and listed; neither is fatal.
         match screen_one(&cx, &plain_fit, c) {
             Ok(s) => screened.push(s),
             Err(DiagnoseError::Cancelled) => return Err(DiagnoseError::Cancelled),
-            Err(why) => implausible.push((c.name(), why.to_string())),
+            Err(DiagnoseError::Input(why)) => implausible.push((c.name(), why)),
+            Err(why) => screened.push(Screened::rejected_at(c, &plain_fit, &why)),
         }
     }
     let k_plain = cx.plain.len();
@@ -123,7 +128,9 @@ pub fn diagnose(
     // The plain fit gets the further rounds a verified candidate had, so that no
     // candidate wins by a better-converged plain fit alone.
     step(0.9, "refining the plain parameters")?;
-    let plain_fit = cx.rounds(plain_fit, None, VERIFY_ROUNDS, None)?;
+    let refined = cx.rounds(plain_fit, None, VERIFY_ROUNDS, None);
+    plain_rejected.extend(refined.rejected);
+    let plain_fit = refined.best;
     step(0.97, "deciding")?;
     let single = cx.single_parameter(&baseline);
     let report = decide::report(
@@ -132,6 +139,7 @@ pub fn diagnose(
         &plain_fit,
         &screened,
         &implausible,
+        &plain_rejected,
         single,
         started.elapsed().as_secs_f64(),
     );

@@ -11,6 +11,7 @@ use super::context::{Context, Evaluated};
 use super::drift::{DRIFT_CHI2, long_run_drift};
 use super::observe::Regime;
 use super::surrogate::{causal_system, run_speeds};
+use super::trial;
 use crate::physics::Excitation;
 use crate::response::forced_response_orders;
 use crate::synth::Effect;
@@ -41,6 +42,28 @@ pub struct Screened {
     /// `evaluated` is a time-domain run on the whole campaign (a second start that was
     /// checked, [`super::restart`]), so verification goes on from it.
     pub in_time_domain: bool,
+    /// Why the candidate was rejected: its screening, or its verification, could not be
+    /// simulated ([`super::trial`]). A rejected candidate is never verified, so never the
+    /// verdict; `evaluated` is then the last point it reached (the plain fit it started
+    /// from when its screening failed).
+    pub rejected: Option<String>,
+    /// Steps of its fits that could not be simulated and were not taken.
+    pub rejected_steps: Vec<String>,
+}
+
+impl Screened {
+    /// A candidate whose screening failed with `why` at the plain fit `plain`.
+    pub fn rejected_at(candidate: &Candidate, plain: &Evaluated, why: &DiagnoseError) -> Self {
+        Self {
+            candidate: candidate.clone(),
+            evaluated: plain.clone(),
+            verified: false,
+            note: "its screening could not be simulated".to_string(),
+            in_time_domain: false,
+            rejected: Some(trial::reason("screening", why)),
+            rejected_steps: Vec::new(),
+        }
+    }
 }
 
 /// Does the linear model represent this effect (so the surrogate can fit it)?
@@ -96,12 +119,18 @@ fn torque_reversal_runs(cx: &Context, e: &Evaluated, name: &str) -> Vec<bool> {
 }
 
 /// Screens one candidate around the plain fit `plain`; an error when it is not plausible
-/// (its signature is absent: [`DiagnoseError::Input`] says why) or cannot be fitted.
+/// (its signature is absent: [`DiagnoseError::Input`] says why) or cannot be fitted (a
+/// [`DiagnoseError::Simulation`]: the caller rejects it, [`Screened::rejected_at`]).
 pub fn screen_one(
     cx: &Context,
     plain: &Evaluated,
     c: &Candidate,
 ) -> Result<Screened, DiagnoseError> {
+    let mut rejected_steps = Vec::new();
+    let mut in_time = |stepped: super::rounds::Stepped| {
+        rejected_steps.extend(stepped.rejected);
+        stepped.best
+    };
     let (evaluated, verified, note) = match c.effect {
         Effect::SensorArtifact => (
             cx.fit_artifact(plain, c)?,
@@ -126,7 +155,7 @@ pub fn screen_one(
                 )));
             }
             (
-                cx.fit_time_domain(plain, c, &runs)?,
+                in_time(cx.fit_time_domain(plain, c, &runs)?),
                 false,
                 "screened in the time domain of the recordings where its torque can reverse"
                     .to_string(),
@@ -146,7 +175,7 @@ pub fn screen_one(
             // capacity loose (4700 J/K for 300 on the reference campaign).
             let long = runs_where(cx, |r| !matches!(r, Regime::Steady { .. }));
             (
-                cx.fit_time_domain(plain, c, &long)?,
+                in_time(cx.fit_time_domain(plain, c, &long)?),
                 false,
                 "screened in the time domain of the long run and the run-up".to_string(),
             )
@@ -167,6 +196,8 @@ pub fn screen_one(
         verified,
         note,
         in_time_domain: false,
+        rejected: None,
+        rejected_steps,
     })
 }
 
@@ -183,7 +214,7 @@ pub fn verify(
     progress: &mut dyn FnMut(usize, usize, &str) -> Result<(), DiagnoseError>,
 ) -> Result<(), DiagnoseError> {
     let mut order: Vec<usize> = (0..screened.len())
-        .filter(|i| !screened[*i].verified)
+        .filter(|i| !screened[*i].verified && screened[*i].rejected.is_none())
         .collect();
     order.sort_by(|a, b| score(&screened[*a].evaluated).total_cmp(&score(&screened[*b].evaluated)));
     let mut chosen: Vec<usize> = Vec::new();
@@ -208,27 +239,44 @@ pub fn verify(
         progress(k, chosen.len(), &s.candidate.name())?;
         let c = &s.candidate;
         let result = if s.in_time_domain {
-            cx.rounds(s.evaluated.clone(), Some(c), VERIFY_ROUNDS - 1, None)
+            Ok(cx.rounds(s.evaluated.clone(), Some(c), VERIFY_ROUNDS - 1, None))
         } else if linear_sees(c.effect) {
-            cx.rounds(
+            Ok(cx.rounds(
                 plain.clone(),
                 Some(c),
                 VERIFY_ROUNDS,
                 Some(s.evaluated.clone()),
-            )
+            ))
         } else {
             // The effect's value from the screening, on the whole campaign, then the
             // plain parameters refitted with it in place.
             let e = &s.evaluated;
-            cx.evaluate(e.model.clone(), e.joint.clone(), e.factors.clone(), e.value)
-                .and_then(|e| cx.rounds(e, Some(c), VERIFY_ROUNDS - 1, None))
+            trial::evaluate(
+                cx,
+                Some(c),
+                e.model.clone(),
+                e.joint.clone(),
+                e.factors.clone(),
+                e.value,
+            )
+            .map(|e| cx.rounds(e, Some(c), VERIFY_ROUNDS - 1, None))
         };
-        // A candidate whose model cannot be run stays unverified, not fatal.
-        if let Ok(e) = result {
-            let s = &mut screened[*i];
-            s.evaluated = e;
-            s.verified = true;
-            s.note = format!("{}; verified in the time domain", s.note);
+        let s = &mut screened[*i];
+        match result {
+            Err(e) if trial::is_fatal(&e) => return Err(e),
+            Err(e) => s.rejected = Some(trial::reason("verification", &e)),
+            // Every round rejected, the first (which adds the effect) too: the effect
+            // was never run on the whole campaign.
+            Ok(stepped) if stepped.best.value.is_none() => {
+                s.rejected = Some(format!("verification: {}", stepped.rejected.join("; ")));
+                s.rejected_steps.extend(stepped.rejected);
+            }
+            Ok(stepped) => {
+                s.evaluated = stepped.best;
+                s.rejected_steps.extend(stepped.rejected);
+                s.verified = true;
+                s.note = format!("{}; verified in the time domain", s.note);
+            }
         }
     }
     Ok(())

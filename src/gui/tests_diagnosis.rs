@@ -74,6 +74,8 @@ fn report() -> Report {
         parameter_count: k,
         signature: String::new(),
         verified: true,
+        rejected: None,
+        rejected_steps: Vec::new(),
     };
     let cell = |station: &str, order: f64, speed_rpm: f64, z: f64| MapCell {
         recording: "Regime A".into(),

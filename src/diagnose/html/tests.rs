@@ -29,6 +29,8 @@ fn candidate(effect: &str, score: f64) -> Candidate {
         parameter_count: 2,
         signature: "order 2 changes with load".into(),
         verified: true,
+        rejected: None,
+        rejected_steps: Vec::new(),
     }
 }
 
