@@ -174,6 +174,8 @@ mod tests {
                 parameter_count: 1,
                 signature: String::new(),
                 verified: true,
+                rejected: None,
+                rejected_steps: Vec::new(),
             }],
             fit: Fit {
                 metric: String::new(),

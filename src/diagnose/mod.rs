@@ -59,6 +59,8 @@ pub mod surrogate;
 mod svg;
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_guard;
 pub mod trial;
 
 pub use html::report_html;

@@ -11,7 +11,7 @@ use std::f64::consts::TAU;
 
 /// A steady recording of the crank at `speed_rpm` with order 2 (`a2` rpm) and order 4
 /// (`a4` rpm) and white noise of `noise_rpm` per sample.
-fn steady(
+pub(super) fn steady(
     label: &str,
     speed_rpm: f64,
     a2: f64,
