@@ -61,6 +61,8 @@ mod svg;
 mod tests;
 #[cfg(test)]
 mod tests_guard;
+#[cfg(test)]
+mod tests_rejected;
 pub mod trial;
 
 pub use html::report_html;
