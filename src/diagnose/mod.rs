@@ -21,6 +21,8 @@
 //!   recordings that show it; an effect whose signature is absent is not fitted), the
 //!   best three by the fitted data verified in the time domain ([`rounds`]). Thermal
 //!   drift needs a drifting long run ([`drift`]).
+//! - [`multistart`]: the plain fit started from the user's values and a small
+//!   deterministic design, so that it escapes a local minimum.
 //! - [`restart`]: every candidate the linear model sees also fitted from the user's
 //!   values, where the plain fit has not bent the plain parameters to stand in for it.
 //! - [`decide`]: held-out scoring with a parameter penalty and the verdict; [`places`]
@@ -39,6 +41,7 @@ pub mod holdout;
 pub mod html;
 pub mod observe;
 pub mod observe_runup;
+pub mod multistart;
 pub mod places;
 pub mod report;
 pub mod report_parts;

@@ -57,7 +57,7 @@ pub fn diagnose(
     let ones = vec![1.0; cx.plain.len()];
     let baseline = cx.evaluate(model.clone(), None, ones, None)?;
     step(0.2, "fitting the plain parameters")?;
-    let plain_fit = cx.rounds(baseline.clone(), None, PLAIN_ROUNDS, None)?;
+    let plain_fit = cx.plain_fit(&baseline, PLAIN_ROUNDS)?;
     let stations: Vec<String> = {
         let mut s: Vec<String> = cx
             .observed
