@@ -221,7 +221,10 @@ mod tests {
         assert!((best.x[0].ln() - 0.2).abs() < 1e-6, "best: {:?}", best.x);
         assert!(best.cost < single.cost / 1e3);
         // The single start's fit is among them, marked 0.
-        assert!(fits.iter().any(|(f, k)| *k == 0 && (f.x[0] - single.x[0]).abs() < 1e-9));
+        assert!(
+            fits.iter()
+                .any(|(f, k)| *k == 0 && (f.x[0] - single.x[0]).abs() < 1e-9)
+        );
     }
 
     /// The design is deterministic, within the bounds, and spreads each parameter over
