@@ -21,11 +21,11 @@ pub const PLAIN_BOUNDS: Bounds = Bounds {
 /// relative standard deviation: 10 %. It enters the fit as one residual `ln f / 0.1`
 /// per factor and only matters along directions the recordings cannot tell apart (an
 /// inertia and a stiffness scaled together keep every natural frequency).
-const PLAIN_PRIOR: f64 = 0.1;
+pub(super) const PLAIN_PRIOR: f64 = 0.1;
 /// Levenberg–Marquardt iterations on the surrogate, and the relative gain of the cost
 /// under which a fit stops.
-const SURROGATE_ITERATIONS: usize = 30;
-const SURROGATE_TOLERANCE: f64 = 1e-4;
+pub(super) const SURROGATE_ITERATIONS: usize = 30;
+pub(super) const SURROGATE_TOLERANCE: f64 = 1e-4;
 
 /// A model evaluated on every observation.
 #[derive(Debug, Clone)]
@@ -150,7 +150,7 @@ impl Context<'_> {
 
     /// The time domain's difference from the linear model at `at`: what the surrogate
     /// adds to the linear model around it (zero where the linear model cannot be built).
-    fn correction(&self, at: &Evaluated) -> Vec<f64> {
+    pub(super) fn correction(&self, at: &Evaluated) -> Vec<f64> {
         match linear_predict(&at.model, &self.observed, at.joint.as_ref()) {
             Some(f0) => at.simulated.iter().zip(&f0).map(|(t, f)| t - f).collect(),
             None => vec![0.0; at.simulated.len()],

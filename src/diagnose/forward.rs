@@ -9,6 +9,7 @@
 use super::forward_runup::{self, BinSums};
 use super::observe::{LONG_RUN_BLOCKS, Observed, Regime, Run, analysis_options, slice};
 use super::observe_runup::bin_means;
+use super::settling;
 use crate::model::{ConnectionKind, Model};
 use crate::recording::{Channel, ChannelKind, Recording, RecordingMeta, RunKind as RecKind};
 use crate::signal::{Analysis, analyse_with};
@@ -26,10 +27,11 @@ const STEADY_MIN_CYCLES: f64 = 8.0;
 /// governor, which dominates it, falls below every analysed order. The transient
 /// module's default (1e-4) takes 5–6 times as many cycles here.
 const SETTLE_TOLERANCE: f64 = 2e-3;
-/// Longest settling of a simulated run, s: a driveline settles to [`SETTLE_TOLERANCE`] in
-/// 20–40 working cycles (under 1 s above 1000 rpm); one that has not by then is rattling
-/// (gear backlash), never settles, and is recorded as it is — its orders then carry the
-/// rattle as the bench's do.
+/// Longest settling of a simulated run, s, for a model whose modes decay fast: a driveline
+/// settles to [`SETTLE_TOLERANCE`] in 20–40 working cycles (under 1 s above 1000 rpm);
+/// one that has not by then is rattling (gear backlash), never settles, and is recorded
+/// as it is — its orders then carry the rattle as the bench's do. A lightly damped mode
+/// extends it to its own decay ([`super::settling::settle_s`]).
 const MAX_SETTLE_S: f64 = 6.0;
 /// The simulation's output rate over the recording's (orders above the recording's
 /// Nyquist frequency must not fold back onto engine orders).
@@ -82,14 +84,20 @@ const VISCOUS_ABOVE: f64 = 3.0;
 
 /// The time domain's settings for simulating `run` (or a part of it whose highest speed
 /// is `top_speed_rpm`) to compare orders up to `max_order`: its load, output at
-/// [`OVERSAMPLING`] times the recording's rate.
-pub(super) fn run_options(run: &Run, max_order: f64, top_speed_rpm: f64) -> RunOptions {
+/// [`OVERSAMPLING`] times the recording's rate, settling as long as the slowest mode's
+/// decay time `decay_s` asks ([`super::settling`]).
+pub(super) fn run_options(
+    run: &Run,
+    max_order: f64,
+    top_speed_rpm: f64,
+    decay_s: Option<f64>,
+) -> RunOptions {
     let compared_hz = max_order * top_speed_rpm / 60.0;
     RunOptions {
         load: run.load,
         rate_hz: OVERSAMPLING * run.rate_hz,
         settle_tolerance: SETTLE_TOLERANCE,
-        max_settle_s: MAX_SETTLE_S,
+        max_settle_s: settling::settle_s(decay_s, MAX_SETTLE_S),
         rtol: RTOL,
         min_steps_per_cycle: MIN_STEPS_PER_CYCLE,
         viscous_above_hz: Some(VISCOUS_ABOVE * compared_hz),
@@ -143,6 +151,7 @@ fn predict_run(
     observed: &Observed,
     r: usize,
     max_order: f64,
+    decay_s: Option<f64>,
 ) -> Result<Vec<(usize, f64)>, String> {
     let run = &observed.runs[r];
     let (speed_rpm, duration_s) =
@@ -151,7 +160,7 @@ fn predict_run(
         speed_rpm,
         duration_s,
     };
-    let options = run_options(run, max_order, speed_rpm);
+    let options = run_options(run, max_order, speed_rpm, decay_s);
     let sim = simulate(model, kind, options, &mut |_| true).map_err(|e| e.to_string())?;
     let rec = station_recording(&sim, run, RecKind::Steady)?;
     let analysis_opts = analysis_options(max_order);
@@ -199,6 +208,12 @@ pub fn predict(
     wanted: Option<&[bool]>,
 ) -> Result<Vec<f64>, (String, String)> {
     let threads = threads.max(1);
+    // The slowest mode's decay time per run (its load): how long runs settle.
+    let decays: Vec<Option<f64>> = observed
+        .runs
+        .iter()
+        .map(|run| settling::slowest_decay_s(model, run.load))
+        .collect();
     let mut jobs: Vec<Job> = Vec::new();
     for (r, run) in observed.runs.iter().enumerate() {
         if !wanted.is_none_or(|w| w.get(r).copied().unwrap_or(false)) {
@@ -208,15 +223,20 @@ pub fn predict(
             // A rubber stage that warms up carries its temperature through the whole
             // run-up: a segment would start it cold again.
             Regime::RunUp { .. } => jobs.extend(
-                forward_runup::segments(observed, r, if warms_up(model) { 1 } else { threads })
-                    .into_iter()
-                    .map(Job::Segment),
+                forward_runup::segments(
+                    observed,
+                    r,
+                    if warms_up(model) { 1 } else { threads },
+                    decays[r],
+                )
+                .into_iter()
+                .map(Job::Segment),
             ),
             _ => jobs.push(Job::Run(r)),
         }
     }
     let cost = |j: &Job| match j {
-        Job::Segment(s) => s.cost_s(observed),
+        Job::Segment(s) => s.cost_s(),
         Job::Run(r) => steady_record(model, &observed.runs[*r]).map_or(0.0, |(_, d)| d),
     };
     jobs.sort_by(|a, b| cost(b).total_cmp(&cost(a)));
@@ -233,7 +253,8 @@ pub fn predict(
                     let (r, result) = match job {
                         Job::Run(r) => (
                             *r,
-                            predict_run(model, observed, *r, max_order).map(Done::Values),
+                            predict_run(model, observed, *r, max_order, decays[*r])
+                                .map(Done::Values),
                         ),
                         Job::Segment(seg) => (
                             seg.run,

@@ -1,9 +1,12 @@
 //! A simulated run-up, in segments: a long run-up is most of a campaign's simulation, so
 //! it is cut into consecutive stretches of the measured ramp that run on different
-//! threads. Each segment starts a little earlier than its stretch (a lead-in on the same
-//! ramp, so the start transient has decayed where the stretch begins), is analysed like
-//! the recording, and its STFT windows go to the speed bins of the measured windows
-//! nearest in time; the bins' sums and window counts of all segments add up.
+//! threads. Each segment settles at the speed where its lead-in starts and ramps at the
+//! measured rate from there, so lightly damped modes are passed transiently as in one
+//! run of the whole ramp ([`crate::transient`]); the lead-in (on the same ramp, long
+//! enough for the slowest mode to decay, [`super::settling`]) is discarded. Each segment
+//! is analysed like the recording, and its STFT windows go to the speed bins of the
+//! measured windows nearest in time; the bins' sums and window counts of all segments add
+//! up.
 
 use super::observe::{Observed, Regime, analysis_options, slice};
 use super::observe_runup::bins;
@@ -15,15 +18,20 @@ use std::collections::BTreeMap;
 
 /// Run-ups shorter than this are one segment, s.
 const SEGMENT_MIN_S: f64 = 10.0;
-/// Lead-in of a segment after the first, s: the lowest mode of a driveline (≥ 20 Hz,
-/// ζ ≥ 3 %) decays by e⁻¹ in ≤ 0.27 s, and the switch from the settled start to the
-/// ramp excites it only through the ramp's small inertia torque.
-const SEGMENT_LEAD_S: f64 = 0.5;
 /// Lead-in of the first segment, s, shortened so the ramp starts above a quarter of its
-/// first recorded speed: the simulated run enters the recorded range already sweeping.
+/// first recorded speed: the simulated run settles at the lead-in's start speed (as long
+/// as its slowest mode needs, [`super::settling::settle_s`]) and enters the recorded range
+/// already sweeping, so its first bins carry no start transient.
 const FIRST_LEAD_S: f64 = 0.1;
+/// Each segment is analysed this much beyond its stretch on both sides (within what was
+/// simulated), s, and keeps only the windows whose centres fall in the stretch: two STFT
+/// windows of 0.1 s, so that the windows at a boundary are whole in one segment, as in
+/// the recording's own analysis. (Cut exactly at the boundary, the bin holding it lost
+/// its edge windows: 6.5 % of the peak off on a 0.7 % resonance's flank.)
+const PAD_S: f64 = 0.2;
 
-/// One stretch of a run-up: recorded time `[from_s, to_s)` of run `run`.
+/// One stretch of a run-up: recorded time `[from_s, to_s)` of run `run`, simulated from
+/// `lead_s` before it.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Segment {
     /// The run.
@@ -32,31 +40,43 @@ pub struct Segment {
     pub from_s: f64,
     /// End, s.
     pub to_s: f64,
+    /// Lead-in on the same ramp before `from_s`, s, whose windows are discarded.
+    pub lead_s: f64,
+    /// The model's slowest decay time at the run's load, s (how long it settles).
+    pub decay_s: Option<f64>,
 }
 
 impl Segment {
-    /// Its lead-in, s.
-    fn lead_s(&self, observed: &Observed) -> f64 {
-        let run = &observed.runs[self.run];
-        let Regime::RunUp { from_rpm, to_rpm } = run.regime else {
-            return 0.0;
-        };
-        if self.from_s > 0.0 {
-            return SEGMENT_LEAD_S.min(self.from_s);
-        }
-        let slope = ((to_rpm - from_rpm) / run.duration_s.max(1e-9)).abs();
-        FIRST_LEAD_S.min(0.75 * from_rpm.min(to_rpm) / slope.max(1e-9))
-    }
-
     /// Simulated duration, s (to order the work).
-    pub fn cost_s(&self, observed: &Observed) -> f64 {
-        self.to_s - self.from_s + self.lead_s(observed)
+    pub fn cost_s(&self) -> f64 {
+        self.to_s - self.from_s + self.lead_s
     }
 }
 
+/// The lead-in of a segment starting at `from_s` of run-up `run`: the first's
+/// [`FIRST_LEAD_S`] (or less, to stay above a quarter of the start speed); a later one's
+/// [`super::settling::lead_s`] of the slowest decay time, within the ramp before it.
+fn lead_in(observed: &Observed, run: usize, from_s: f64, decay_s: Option<f64>) -> f64 {
+    let r = &observed.runs[run];
+    let Regime::RunUp { from_rpm, to_rpm } = r.regime else {
+        return 0.0;
+    };
+    if from_s > 0.0 {
+        return super::settling::lead_s(decay_s).min(from_s);
+    }
+    let slope = ((to_rpm - from_rpm) / r.duration_s.max(1e-9)).abs();
+    FIRST_LEAD_S.min(0.75 * from_rpm.min(to_rpm) / slope.max(1e-9))
+}
+
 /// The segments of run-up `run`: `count` equal ones when it is longer than
-/// [`SEGMENT_MIN_S`], else one.
-pub fn segments(observed: &Observed, run: usize, count: usize) -> Vec<Segment> {
+/// [`SEGMENT_MIN_S`], else one; `decay_s` the model's slowest decay time at the run's
+/// load ([`super::settling::slowest_decay_s`]).
+pub fn segments(
+    observed: &Observed,
+    run: usize,
+    count: usize,
+    decay_s: Option<f64>,
+) -> Vec<Segment> {
     let duration = observed.runs[run].duration_s;
     let count = if duration < SEGMENT_MIN_S {
         1
@@ -64,10 +84,15 @@ pub fn segments(observed: &Observed, run: usize, count: usize) -> Vec<Segment> {
         count.max(1)
     };
     (0..count)
-        .map(|k| Segment {
-            run,
-            from_s: duration * k as f64 / count as f64,
-            to_s: duration * (k + 1) as f64 / count as f64,
+        .map(|k| {
+            let from_s = duration * k as f64 / count as f64;
+            Segment {
+                run,
+                from_s,
+                to_s: duration * (k + 1) as f64 / count as f64,
+                lead_s: lead_in(observed, run, from_s, decay_s),
+                decay_s,
+            }
         })
         .collect()
 }
@@ -88,17 +113,21 @@ pub fn predict_segment(
         return Err("not a run-up".into());
     };
     let slope = (to_rpm - from_rpm) / run.duration_s.max(1e-9);
-    let lead = seg.lead_s(observed);
+    let lead = seg.lead_s;
     let start = seg.from_s - lead;
+    let end = seg.to_s + PAD_S;
     let kind = RunKind::Ramp {
         from_rpm: from_rpm + slope * start,
-        to_rpm: from_rpm + slope * seg.to_s,
-        duration_s: seg.to_s - start,
+        to_rpm: from_rpm + slope * end,
+        duration_s: end - start,
     };
-    let options = super::forward::run_options(run, max_order, from_rpm.max(to_rpm));
+    let options = super::forward::run_options(run, max_order, from_rpm.max(to_rpm), seg.decay_s);
     let sim = simulate(model, kind, options, &mut |_| true).map_err(|e| e.to_string())?;
     let rec = super::forward::station_recording(&sim, run, RecKind::RunUp)?;
-    let mut rec = slice(&rec, lead, lead + seg.to_s - seg.from_s);
+    let pad = PAD_S.min(lead);
+    let mut rec = slice(&rec, lead - pad, lead + seg.to_s - seg.from_s + PAD_S);
+    // Recorded time of the slice's first sample.
+    let offset_s = seg.from_s - pad;
     let t0 = rec.time_s.first().copied().unwrap_or(0.0);
     rec.time_s.iter_mut().for_each(|t| *t -= t0);
     let a = analyse_with(&rec, &analysis_options(max_order)).map_err(|e| e.to_string())?;
@@ -110,7 +139,10 @@ pub fn predict_segment(
         .times_s
         .iter()
         .map(|t| {
-            let t = t + seg.from_s;
+            let t = t + offset_s;
+            if t < seg.from_s || t >= seg.to_s {
+                return None;
+            }
             let k = times.partition_point(|x| *x < t);
             let near = [k.saturating_sub(1), k.min(times.len().saturating_sub(1))]
                 .into_iter()

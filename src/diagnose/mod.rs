@@ -21,6 +21,8 @@
 //!   recordings that show it; an effect whose signature is absent is not fitted), the
 //!   best three by the fitted data verified in the time domain ([`rounds`]). Thermal
 //!   drift needs a drifting long run ([`drift`]).
+//! - [`multistart`]: the plain fit started from the user's values and a small
+//!   deterministic design, so that it escapes a local minimum.
 //! - [`restart`]: every candidate the linear model sees also fitted from the user's
 //!   values, where the plain fit has not bent the plain parameters to stand in for it.
 //! - [`trial`]: every model the diagnosis proposes is run there; one that cannot be
@@ -43,6 +45,7 @@ pub mod forward_runup;
 pub mod guard;
 pub mod holdout;
 pub mod html;
+pub mod multistart;
 pub mod observe;
 pub mod observe_runup;
 pub mod places;
@@ -52,8 +55,11 @@ pub mod residual;
 pub mod restart;
 pub mod rounds;
 pub mod run;
+#[cfg(test)]
+mod runup_tests;
 pub mod screen;
 pub mod sensor;
+pub mod settling;
 pub mod spread;
 pub mod surrogate;
 mod svg;

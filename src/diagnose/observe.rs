@@ -24,8 +24,6 @@ pub const LONG_RUN_BLOCKS: usize = 4;
 pub const BIN_RPM: f64 = 100.0;
 /// Parts of a record whose scatter gives the noise.
 const PARTS: usize = 4;
-/// Smallest noise assumed for an amplitude, rpm: the recordings' resolution.
-const MIN_SIGMA_RPM: f64 = 1e-4;
 
 /// How a recording is compared.
 #[derive(Debug, Clone, PartialEq)]
@@ -225,7 +223,14 @@ pub fn observe(
                 run.cycle_speeds_rpm =
                     vec![cycle_speeds(rec, &analysis.reference, analysis.cycle_rev)];
                 let noise = steady_noise(rec, duration, &options, &analysis).map_err(fail)?;
-                push_steady(&mut observed, i, 0, &analysis, &noise, duration / 2.0);
+                push_steady(
+                    &mut observed,
+                    i,
+                    0,
+                    (rec, &analysis),
+                    &noise,
+                    duration / 2.0,
+                );
                 noise
                     .iter()
                     .map(|s| sample_noise(*s, rec.time_s.len()))
@@ -250,12 +255,17 @@ pub fn observe(
         observed.runs.push(run);
         observed.sample_noise_rpm.push(noise);
     }
-    // Run-ups take the sample noise of the steady runs (median per station).
+    // Run-ups take the sample noise of the steady runs (median per station), never below
+    // their own column's quantisation noise q/√12 ([`amplitude_floor`]).
     for (i, analysis) in run_ups {
+        let rec = &recordings[i].recording;
         let noise: Vec<f64> = observed.runs[i]
             .stations
             .iter()
-            .map(|s| median_noise(&observed, s))
+            .map(|s| {
+                let q = resolution_rpm(rec.speed_rpm(s).unwrap_or(&[]));
+                median_noise(&observed, s).max(q / 12f64.sqrt())
+            })
             .collect();
         super::observe_runup::push_run_up(&mut observed, i, &analysis, &noise);
         observed.sample_noise_rpm[i] = noise;
@@ -311,21 +321,54 @@ fn sample_noise(sigma_amplitude: f64, samples: usize) -> f64 {
     sigma_amplitude * (samples as f64 / 2.0).sqrt()
 }
 
-/// Pushes the order amplitudes of every station of a steady `analysis`.
+/// The quantisation step of a speed column, rpm: the smallest positive difference
+/// between two of its distinct values (0 for fewer than two distinct values).
+fn resolution_rpm(values: &[f64]) -> f64 {
+    let mut v: Vec<f64> = values.iter().copied().filter(|x| x.is_finite()).collect();
+    v.sort_by(f64::total_cmp);
+    v.windows(2)
+        .map(|w| w[1] - w[0])
+        .filter(|d| *d > 0.0)
+        .min_by(f64::total_cmp)
+        .unwrap_or(0.0)
+}
+
+/// Per station of `analysis`, the smallest σ an order amplitude of `rec` can have, rpm:
+/// the quantisation noise of its speed column (step `q`, uniform error: `q/√12` per
+/// sample) carried to an amplitude of `N` samples, `q/√12 · √(2/N)`; never below the
+/// column's floating-point resolution (`ε` times its mean), so that a noise-free record
+/// still has a finite z. Replaces a fixed 1e-4 rpm (issue 14, item 5: noise from each
+/// campaign): an encoder whose pulse clock prints microseconds resolves far coarser.
+pub fn amplitude_floor(rec: &Recording, analysis: &Analysis) -> Vec<f64> {
+    let n = rec.time_s.len().max(1) as f64;
+    analysis
+        .stations
+        .iter()
+        .map(|s| {
+            let values = rec.speed_rpm(&s.name).unwrap_or(&[]);
+            let quantised = resolution_rpm(values) / 12f64.sqrt() * (2.0 / n).sqrt();
+            quantised.max(f64::EPSILON * s.mean_speed_rpm.abs().max(1.0))
+        })
+        .collect()
+}
+
+/// Pushes the order amplitudes of every station of a steady `analysis` of `rec`.
 fn push_steady(
     observed: &mut Observed,
     run: usize,
     part: usize,
-    analysis: &Analysis,
+    (rec, analysis): (&Recording, &Analysis),
     noise: &[f64],
     time_s: f64,
 ) {
+    let floor = amplitude_floor(rec, analysis);
     let speed = analysis
         .stations
         .iter()
         .find(|s| s.name == analysis.reference)
         .map_or(0.0, |s| s.mean_speed_rpm);
-    for (station, sigma) in analysis.stations.iter().zip(noise) {
+    for ((station, sigma), floor) in analysis.stations.iter().zip(noise).zip(floor) {
+        let sigma = sigma.max(floor);
         for o in station.orders.iter().filter(|o| o.order > 0.0) {
             observed.observations.push(Observation {
                 run,
@@ -335,8 +378,8 @@ fn push_steady(
                 speed_rpm: speed,
                 time_s,
                 measured_rpm: o.amplitude,
-                sigma_rpm: sigma.max(MIN_SIGMA_RPM),
-                bias_sigma_rpm: sigma.max(MIN_SIGMA_RPM),
+                sigma_rpm: sigma,
+                bias_sigma_rpm: sigma,
             });
         }
     }
@@ -419,7 +462,7 @@ fn long_run(
             observed,
             run,
             b,
-            &analysis,
+            (&part, &analysis),
             &noise,
             (b as f64 + 0.5) * block,
         );

@@ -159,6 +159,9 @@ pub fn push_run_up(observed: &mut Observed, run: usize, analysis: &Analysis, noi
                 }
                 // Half-overlapping windows: about one independent estimate per 1.5.
                 let independent = (count[b] as f64 / 1.5).max(1.0);
+                // Floating-point resolution of the speed: a finite z for a noise-free
+                // record (the quantisation floor is in `noise` already).
+                let tiny = f64::EPSILON * v.abs().max(1.0);
                 let sigma_window = sigma_record.max(scatter.get(b).copied().unwrap_or(0.0));
                 observed.observations.push(Observation {
                     run,
@@ -168,8 +171,8 @@ pub fn push_run_up(observed: &mut Observed, run: usize, analysis: &Analysis, noi
                     speed_rpm: v,
                     time_s: middle,
                     measured_rpm: a,
-                    sigma_rpm: (sigma_window / independent.sqrt()).max(1e-4),
-                    bias_sigma_rpm: sigma_window.max(1e-4),
+                    sigma_rpm: (sigma_window / independent.sqrt()).max(tiny),
+                    bias_sigma_rpm: sigma_window.max(tiny),
                 });
             }
         }

@@ -58,7 +58,7 @@ pub fn diagnose(
     // The user's model as given: its failure is the only simulation error (issue 14).
     let baseline = cx.evaluate(model.clone(), None, ones, None)?;
     step(0.2, "fitting the plain parameters")?;
-    let fitted = cx.rounds(baseline.clone(), None, PLAIN_ROUNDS, None);
+    let fitted = cx.plain_fit(&baseline, PLAIN_ROUNDS)?;
     let mut plain_rejected = fitted.rejected;
     let plain_fit = fitted.best;
     let stations: Vec<String> = {

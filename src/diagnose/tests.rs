@@ -173,3 +173,25 @@ fn one_steady_recording_is_refused_not_nan() {
     let observed = observe(&two, 8.0).unwrap();
     assert!(super::holdout::check_split(&observed, &held_out(&observed)).is_ok());
 }
+
+/// The noise floor is the recording's own resolution (issue 14, item 5): a noise-free
+/// record printed to 0.5 rpm cannot claim amplitudes finer than its quantisation noise
+/// `q/√12 · √(2/N)` = 4.6e-3 rpm (N = 2000), where a fixed 1e-4 rpm floor claimed 46
+/// times less; unrounded, the floor falls to the column's floating-point resolution.
+#[test]
+fn the_noise_floor_is_the_recordings_resolution() {
+    let mut rec = steady("Q", 3000.0, 5.0, 2.0, 0.0, 1);
+    for v in &mut rec.recording.channels[0].values {
+        *v = (*v * 2.0).round() / 2.0;
+    }
+    let observed = observe(&[rec], 8.0).unwrap();
+    let floor = 0.5 / 12f64.sqrt() * (2.0 / 2000.0_f64).sqrt();
+    for o in &observed.observations {
+        assert!(o.sigma_rpm >= floor * (1.0 - 1e-9), "{o:?}");
+    }
+    let exact = steady("E", 3000.0, 5.0, 2.0, 0.0, 1);
+    let observed = observe(&[exact], 8.0).unwrap();
+    for o in &observed.observations {
+        assert!(o.sigma_rpm > 0.0 && o.sigma_rpm < 1e-3, "{o:?}");
+    }
+}
