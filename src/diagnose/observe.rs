@@ -138,10 +138,29 @@ pub fn samples_per_rev(max_order: f64) -> usize {
 const POINTS_PER_PERIOD: f64 = 8.0;
 
 /// The samples of `recording` from `from_s` to `to_s` (relative to its first sample).
+///
+/// The cut is made on the sample index, `i·Δt` with Δt the recording's mean step, not on
+/// the printed clock: a DAQ's time column rounded to the microsecond, or a clock that starts
+/// at 187.6 s, must not move a sample across a boundary (issue 14, item 1).
 pub fn slice(recording: &Recording, from_s: f64, to_s: f64) -> Recording {
-    let t0 = recording.time_s.first().copied().unwrap_or(0.0);
-    let lo = recording.time_s.partition_point(|t| t - t0 < from_s);
-    let hi = recording.time_s.partition_point(|t| t - t0 < to_s);
+    let n = recording.time_s.len();
+    let step_s = if n > 1 {
+        duration_s(recording) / n as f64
+    } else {
+        0.0
+    };
+    let index = |at_s: f64| {
+        if step_s > 0.0 {
+            // The first index whose nominal time i·Δt is not before `at_s` (a boundary
+            // on a sample, within 1e-9 of a step of round-off, keeps that sample).
+            let i = (at_s / step_s - 1e-9).ceil().max(0.0);
+            (if i.is_finite() { i as usize } else { n }).min(n)
+        } else {
+            usize::from(at_s > 0.0).min(n)
+        }
+    };
+    let (lo, hi) = (index(from_s), index(to_s));
+    let hi = hi.max(lo);
     let mut out = recording.clone();
     out.time_s = recording.time_s[lo..hi].to_vec();
     for c in &mut out.channels {
