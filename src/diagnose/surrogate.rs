@@ -7,15 +7,15 @@
 //! time-domain run at its result, which is what gets scored.
 //!
 //! The plain parameters are every inertia and every stiffness of the model
-//! ([`crate::synth::param_error::parameter_names`]), fitted as scale factors.
+//! ([`crate::effects::param_error::parameter_names`]), fitted as scale factors.
 
 use super::observe::{Observed, Regime};
 use super::sensor::{self, TapeJoint};
 use super::spread::spread_factors;
+use crate::effects::param_error::{parameter_names, scale_parameter};
 use crate::model::{ConnectionKind, Model};
 use crate::physics::{ElementLaw, Excitation, OperatingPoint, System};
 use crate::response::forced_response_orders;
-use crate::synth::param_error::{parameter_names, scale_parameter};
 use crate::transient::maxwell::{MaxwellChain, excited_band_hz};
 
 /// A plain parameter: its full name (`connection.shaft.stiffness`) and the node or

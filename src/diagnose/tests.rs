@@ -5,8 +5,8 @@ use super::holdout::held_out;
 use super::observe::{Regime, cycle_speeds, observe};
 use super::residual::expected;
 use super::sensor::sinc;
+use crate::effects::rng::Rng;
 use crate::recording::{Channel, ChannelKind, Recording, RecordingMeta, RunKind};
-use crate::synth::rng::Rng;
 use std::f64::consts::TAU;
 
 /// A steady recording of the crank at `speed_rpm` with order 2 (`a2` rpm) and order 4
