@@ -5,7 +5,7 @@
 //! the recording, and its STFT windows go to the speed bins of the measured windows
 //! nearest in time; the bins' sums and window counts of all segments add up.
 
-use super::observe::{Observed, Regime, analysis_options, slice};
+use super::observe::{Observed, RunShape, analysis_options, slice};
 use super::observe_runup::bins;
 use crate::model::Model;
 use crate::recording::RunKind as RecKind;
@@ -38,7 +38,7 @@ impl Segment {
     /// Its lead-in, s.
     fn lead_s(&self, observed: &Observed) -> f64 {
         let run = &observed.runs[self.run];
-        let Regime::RunUp { from_rpm, to_rpm } = run.regime else {
+        let RunShape::Ramp { from_rpm, to_rpm } = run.regime else {
             return 0.0;
         };
         if self.from_s > 0.0 {
@@ -84,7 +84,7 @@ pub fn predict_segment(
     max_order: f64,
 ) -> Result<BinSums, String> {
     let run = &observed.runs[seg.run];
-    let Regime::RunUp { from_rpm, to_rpm } = run.regime else {
+    let RunShape::Ramp { from_rpm, to_rpm } = run.regime else {
         return Err("not a run-up".into());
     };
     let slope = (to_rpm - from_rpm) / run.duration_s.max(1e-9);

@@ -9,7 +9,7 @@
 //! The plain parameters are every inertia and every stiffness of the model
 //! ([`crate::effects::param_error::parameter_names`]), fitted as scale factors.
 
-use super::observe::{Observed, Regime};
+use super::observe::{Observed, RunShape};
 use super::sensor::{self, TapeJoint};
 use super::spread::spread_factors;
 use crate::effects::param_error::{parameter_names, scale_parameter};
@@ -57,8 +57,8 @@ pub fn scaled(model: &Model, plain: &[Plain], factors: &[f64]) -> Result<Model, 
 /// The speeds a run's time-domain rubber chain is fitted for, rpm: `[lo, hi]`.
 pub fn run_speeds(observed: &Observed, run: usize) -> [f64; 2] {
     match observed.runs[run].regime {
-        Regime::Steady { speed_rpm } | Regime::LongRun { speed_rpm } => [speed_rpm, speed_rpm],
-        Regime::RunUp { from_rpm, to_rpm } => [from_rpm.min(to_rpm), from_rpm.max(to_rpm)],
+        RunShape::Steady { speed_rpm } | RunShape::LongRun { speed_rpm } => [speed_rpm, speed_rpm],
+        RunShape::Ramp { from_rpm, to_rpm } => [from_rpm.min(to_rpm), from_rpm.max(to_rpm)],
     }
 }
 
@@ -131,8 +131,8 @@ pub fn linear_predict(
         orders.sort_by(f64::total_cmp);
         orders.dedup();
         let mut speeds: Vec<f64> = match run.regime {
-            Regime::Steady { speed_rpm } | Regime::LongRun { speed_rpm } => vec![speed_rpm],
-            Regime::RunUp { .. } => mine
+            RunShape::Steady { speed_rpm } | RunShape::LongRun { speed_rpm } => vec![speed_rpm],
+            RunShape::Ramp { .. } => mine
                 .iter()
                 .map(|i| observed.observations[*i].speed_rpm)
                 .collect(),
