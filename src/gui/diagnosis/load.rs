@@ -139,28 +139,3 @@ pub fn unique_label(label: &str, path: &Path, taken: &[&str]) -> String {
         label.to_string()
     }
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// A 1000 to 6000 rpm ramp in 20 s with ±20 rpm of order-2 vibration at 1 kHz
-    /// sampling: the ends come out within 1 rpm (the mean over the first 5 % would be
-    /// 125 rpm off).
-    #[test]
-    fn run_up_ends_follow_the_ramp_not_the_window_mean() {
-        let t: Vec<f64> = (0..20_000).map(|i| f64::from(i) * 1e-3).collect();
-        let v: Vec<f64> = t
-            .iter()
-            .map(|&t| {
-                let n = 1000.0 + 250.0 * t;
-                n + 20.0 * (2.0 * std::f64::consts::PI * 2.0 * n / 60.0 * t).sin()
-            })
-            .collect();
-        let [a, b] = run_up_ends(&t, &v);
-        assert!((a - 1000.0).abs() < 1.0, "{a}");
-        assert!((b - (1000.0 + 250.0 * 19.999)).abs() < 1.0, "{b}");
-        assert_eq!(run_up_ends(&[], &[]), [0.0, 0.0]);
-        assert_eq!(line_at(&[1.0, 1.0], &[2.0, 4.0], 5.0), 3.0);
-    }
-}
