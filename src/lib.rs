@@ -60,6 +60,7 @@
 pub mod check;
 pub mod compare;
 pub mod diagnose;
+pub mod effects;
 pub mod files;
 pub mod limits;
 pub mod modal;

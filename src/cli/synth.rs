@@ -86,7 +86,8 @@ pub struct SynthArgs {
 }
 
 /// Bad input is exit 2; a simulation or measurement that failed is exit 1.
-fn cli_error(e: SynthError) -> CliError {
+fn cli_error(e: impl Into<SynthError>) -> CliError {
+    let e: SynthError = e.into();
     match &e {
         SynthError::Input(_) => CliError::input(e),
         SynthError::Simulation { source, .. } => match source {

@@ -10,8 +10,8 @@
 use super::candidates::{Candidate, candidates};
 use super::report::{ParameterValue, Report, Verdict};
 use super::surrogate::{plain_parameters, scaled};
+use crate::effects::Effect;
 use crate::model::Model;
-use crate::synth::Effect;
 
 /// The user's `model` with `report`'s verdict applied (see the module docs).
 ///

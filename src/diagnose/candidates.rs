@@ -1,5 +1,5 @@
 //! The candidate effects: each effect of `spec/diagnosis.md` as a model extension with one
-//! fitted parameter, built by the same code that [`crate::synth`] uses to add it, and the
+//! fitted parameter, built by the effect models of [`crate::effects`] (which the synthetic bench also uses), and the
 //! places in the model where it can sit (every rubber stage, every gear, every cylinder,
 //! every station).
 //!
@@ -17,8 +17,8 @@
 
 use super::fit::Bounds;
 use super::sensor::TapeJoint;
+use crate::effects::{Effect, EffectSpec, build_truth};
 use crate::model::{ConnectionKind, Model};
-use crate::synth::{Effect, EffectSpec, build_truth};
 
 /// A fitted parameter: its key, start, bounds and whether it is fitted in log.
 #[derive(Debug, Clone, PartialEq)]

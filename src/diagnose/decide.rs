@@ -18,7 +18,6 @@
 use super::context::{Context, Evaluated};
 use super::guard;
 use super::holdout::{held_out_labels, roles};
-use super::observe::Regime;
 use super::places::{SAME_Z, equivalent_places};
 use super::report::*;
 use super::screen::Screened;
@@ -291,15 +290,6 @@ struct Candidate_<'a> {
     out: super::report::Candidate,
     evaluated: &'a Evaluated,
     candidate: &'a super::candidates::Candidate,
-}
-
-/// The label of a run's kind for the report.
-pub fn kind_label(regime: &Regime) -> &'static str {
-    match regime {
-        Regime::Steady { .. } => "steady",
-        Regime::LongRun { .. } => "long run",
-        Regime::RunUp { .. } => "run-up",
-    }
 }
 
 /// Held-out labels (re-exported for the report parts).

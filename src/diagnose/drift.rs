@@ -6,7 +6,7 @@
 //! squares and divided by its standard error from the blocks' noise; with no drift these
 //! `z` are standard normal, and their mean square is 1 ± √(2/n).
 
-use super::observe::{Observed, Regime};
+use super::observe::{Observed, RunShape};
 use std::collections::BTreeMap;
 
 /// Mean square of the slopes' `z` above which a long run drifts. Without drift it is
@@ -21,7 +21,7 @@ pub fn long_run_drift(observed: &Observed) -> Option<f64> {
     type Blocks = Vec<(f64, f64, f64)>;
     let mut groups: BTreeMap<(usize, &str, u64), Blocks> = BTreeMap::new();
     for o in &observed.observations {
-        if matches!(observed.runs[o.run].regime, Regime::LongRun { .. }) {
+        if matches!(observed.runs[o.run].regime, RunShape::LongRun { .. }) {
             groups
                 .entry((o.run, o.station.as_str(), o.order.to_bits()))
                 .or_default()
@@ -79,7 +79,7 @@ mod tests {
         Observed {
             runs: vec![Run {
                 label: "long run".into(),
-                regime: Regime::LongRun { speed_rpm: 3000.0 },
+                regime: RunShape::LongRun { speed_rpm: 3000.0 },
                 load: 1.0,
                 duration_s: 20.0,
                 rate_hz: 2000.0,

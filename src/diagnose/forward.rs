@@ -7,7 +7,7 @@
 //! run-up is cut into one segment per thread ([`super::forward_runup`]).
 
 use super::forward_runup::{self, BinSums};
-use super::observe::{LONG_RUN_BLOCKS, Observed, Regime, Run, analysis_options, slice};
+use super::observe::{LONG_RUN_BLOCKS, Observed, RunShape, Run, analysis_options, slice};
 use super::observe_runup::bin_means;
 use super::settling;
 use crate::model::{ConnectionKind, Model};
@@ -51,8 +51,8 @@ fn steady_record(model: &Model, run: &Run) -> Option<(f64, f64)> {
     let cycle_s = |speed_rpm: f64| 120.0 / speed_rpm.max(1.0);
     let short = |speed_rpm: f64| STEADY_MIN_S.max(STEADY_MIN_CYCLES * cycle_s(speed_rpm));
     match run.regime {
-        Regime::Steady { speed_rpm } => Some((speed_rpm, run.duration_s.min(short(speed_rpm)))),
-        Regime::LongRun { speed_rpm } => Some((
+        RunShape::Steady { speed_rpm } => Some((speed_rpm, run.duration_s.min(short(speed_rpm)))),
+        RunShape::LongRun { speed_rpm } => Some((
             speed_rpm,
             if warms_up(model) {
                 run.duration_s
@@ -60,7 +60,7 @@ fn steady_record(model: &Model, run: &Run) -> Option<(f64, f64)> {
                 short(speed_rpm)
             },
         )),
-        Regime::RunUp { .. } => None,
+        RunShape::Ramp { .. } => None,
     }
 }
 
@@ -171,13 +171,13 @@ fn predict_run(
         .enumerate()
         .filter(|(_, o)| o.run == r);
     match run.regime {
-        Regime::Steady { .. } => {
+        RunShape::Steady { .. } => {
             let a = analyse(&rec)?;
             Ok(mine
                 .map(|(i, o)| (i, amplitude(&a, &o.station, o.order)))
                 .collect())
         }
-        Regime::LongRun { .. } => {
+        RunShape::LongRun { .. } => {
             let blocks: Vec<Analysis> = if warms_up(model) {
                 let block = run.duration_s / LONG_RUN_BLOCKS as f64;
                 (0..LONG_RUN_BLOCKS)
@@ -193,7 +193,7 @@ fn predict_run(
                 })
                 .collect())
         }
-        Regime::RunUp { .. } => Err("a run-up is simulated by segments".into()),
+        RunShape::Ramp { .. } => Err("a run-up is simulated by segments".into()),
     }
 }
 
@@ -222,7 +222,7 @@ pub fn predict(
         match run.regime {
             // A rubber stage that warms up carries its temperature through the whole
             // run-up: a segment would start it cold again.
-            Regime::RunUp { .. } => jobs.extend(
+            RunShape::Ramp { .. } => jobs.extend(
                 forward_runup::segments(
                     observed,
                     r,
@@ -293,7 +293,7 @@ pub fn predict(
     let mut out = out.into_inner().map_err(|_| panicked())?;
     let sums = sums.into_inner().map_err(|_| panicked())?;
     for (i, o) in observed.observations.iter().enumerate() {
-        if !matches!(observed.runs[o.run].regime, Regime::RunUp { .. }) {
+        if !matches!(observed.runs[o.run].regime, RunShape::Ramp { .. }) {
             continue;
         }
         if let Some((sum, count)) = sums[o.run].get(&(o.station.clone(), o.order.to_bits())) {

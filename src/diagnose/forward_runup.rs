@@ -8,7 +8,7 @@
 //! measured windows nearest in time; the bins' sums and window counts of all segments add
 //! up.
 
-use super::observe::{Observed, Regime, analysis_options, slice};
+use super::observe::{Observed, RunShape, analysis_options, slice};
 use super::observe_runup::bins;
 use crate::model::Model;
 use crate::recording::RunKind as RecKind;
@@ -58,7 +58,7 @@ impl Segment {
 /// [`super::settling::lead_s`] of the slowest decay time, within the ramp before it.
 fn lead_in(observed: &Observed, run: usize, from_s: f64, decay_s: Option<f64>) -> f64 {
     let r = &observed.runs[run];
-    let Regime::RunUp { from_rpm, to_rpm } = r.regime else {
+    let RunShape::Ramp { from_rpm, to_rpm } = r.regime else {
         return 0.0;
     };
     if from_s > 0.0 {
@@ -109,7 +109,7 @@ pub fn predict_segment(
     max_order: f64,
 ) -> Result<BinSums, String> {
     let run = &observed.runs[seg.run];
-    let Regime::RunUp { from_rpm, to_rpm } = run.regime else {
+    let RunShape::Ramp { from_rpm, to_rpm } = run.regime else {
         return Err("not a run-up".into());
     };
     let slope = (to_rpm - from_rpm) / run.duration_s.max(1e-9);

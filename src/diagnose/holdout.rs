@@ -8,7 +8,7 @@
 //! - A run-up: its speed bins alternate, so a resonance is in both halves.
 
 use super::DiagnoseError;
-use super::observe::{LONG_RUN_BLOCKS, Observed, Regime};
+use super::observe::{LONG_RUN_BLOCKS, Observed, RunShape};
 
 /// `true` for the held-out observations.
 pub fn held_out(observed: &Observed) -> Vec<bool> {
@@ -18,7 +18,7 @@ pub fn held_out(observed: &Observed) -> Vec<bool> {
         .iter()
         .enumerate()
         .filter_map(|(r, run)| match run.regime {
-            Regime::Steady { speed_rpm } => Some((r, (run.load * 1000.0).round(), speed_rpm)),
+            RunShape::Steady { speed_rpm } => Some((r, (run.load * 1000.0).round(), speed_rpm)),
             _ => None,
         })
         .collect();
@@ -38,9 +38,9 @@ pub fn held_out(observed: &Observed) -> Vec<bool> {
         .observations
         .iter()
         .map(|o| match observed.runs[o.run].regime {
-            Regime::Steady { .. } => rank[o.run] % 2 == 1,
-            Regime::LongRun { .. } => o.part >= LONG_RUN_BLOCKS / 2,
-            Regime::RunUp { .. } => o.part % 2 == 1,
+            RunShape::Steady { .. } => rank[o.run] % 2 == 1,
+            RunShape::LongRun { .. } => o.part >= LONG_RUN_BLOCKS / 2,
+            RunShape::Ramp { .. } => o.part % 2 == 1,
         })
         .collect()
 }
@@ -82,9 +82,9 @@ pub fn held_out_labels(observed: &Observed, mask: &[bool]) -> Vec<String> {
             continue;
         }
         labels.push(match run.regime {
-            Regime::Steady { .. } => run.label.clone(),
-            Regime::LongRun { .. } => format!("{} (second half)", run.label),
-            Regime::RunUp { .. } => format!("{} (every other 100 rpm bin)", run.label),
+            RunShape::Steady { .. } => run.label.clone(),
+            RunShape::LongRun { .. } => format!("{} (second half)", run.label),
+            RunShape::Ramp { .. } => format!("{} (every other 100 rpm bin)", run.label),
         });
     }
     labels
@@ -97,9 +97,9 @@ pub fn roles(observed: &Observed, mask: &[bool]) -> Vec<String> {
         .iter()
         .enumerate()
         .map(|(r, run)| match run.regime {
-            Regime::LongRun { .. } => "fit (first half), held out (second half)".to_string(),
-            Regime::RunUp { .. } => "fit and held out (alternate speed bins)".to_string(),
-            Regime::Steady { .. } => {
+            RunShape::LongRun { .. } => "fit (first half), held out (second half)".to_string(),
+            RunShape::Ramp { .. } => "fit and held out (alternate speed bins)".to_string(),
+            RunShape::Steady { .. } => {
                 let held = observed
                     .observations
                     .iter()

@@ -14,7 +14,7 @@
 //! - [`context`]: the two ways a model is evaluated: the time domain (what is scored) and
 //!   the linear surrogate (what the fits move on).
 //! - [`candidates`]: the effects of the spec's table as model extensions with few
-//!   parameters (they are the effects [`crate::synth`] can add), each with its signature.
+//!   parameters (they are the effect models of [`crate::effects`]), each with its signature.
 //! - [`fit`]: Levenberg–Marquardt on the effect's parameter together with the scale
 //!   factors of the plain parameters it could be confused with (all of them).
 //! - [`screen`]: every candidate fitted cheaply (surrogate, or the time domain of only the

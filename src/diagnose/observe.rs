@@ -13,11 +13,9 @@
 
 use super::DiagnoseError;
 use super::LabelledRecording;
-use crate::recording::{Recording, RunKind};
+use crate::recording::{Recording, classify};
 use crate::signal::{Analysis, AnalysisOptions, analyse_with};
 
-/// A steady run at least this long is a long run, s.
-pub const LONG_RUN_S: f64 = 8.0;
 /// Time blocks of a long run.
 pub const LONG_RUN_BLOCKS: usize = 4;
 /// Speed bin of a run-up, rpm.
@@ -25,27 +23,11 @@ pub const BIN_RPM: f64 = 100.0;
 /// Parts of a record whose scatter gives the noise.
 const PARTS: usize = 4;
 
-/// How a recording is compared.
-#[derive(Debug, Clone, PartialEq)]
-pub enum Regime {
-    /// A steady regime at the measured mean speed, rpm.
-    Steady {
-        /// Mean reference speed, rpm.
-        speed_rpm: f64,
-    },
-    /// A long steady run in [`LONG_RUN_BLOCKS`] time blocks.
-    LongRun {
-        /// Mean reference speed, rpm.
-        speed_rpm: f64,
-    },
-    /// A run-up (or run-down) along the measured ramp.
-    RunUp {
-        /// Reference speed at the first sample, rpm.
-        from_rpm: f64,
-        /// Reference speed at the last sample, rpm.
-        to_rpm: f64,
-    },
-}
+/// How a recording is compared: its shape, by the one classifier
+/// ([`crate::recording::classify`]), with the speeds this analysis measures.
+pub use crate::recording::RunShape;
+/// A steady recording at least this long is a long run (the classifier's rule).
+pub use crate::recording::shape::{LONG_RUN_S, duration_s};
 
 /// A recording as the diagnosis sees it.
 #[derive(Debug, Clone, PartialEq)]
@@ -53,7 +35,7 @@ pub struct Run {
     /// Label.
     pub label: String,
     /// How it is compared.
-    pub regime: Regime,
+    pub regime: RunShape,
     /// Engine load 0..1.
     pub load: f64,
     /// Recorded duration, s.
@@ -169,16 +151,6 @@ pub fn slice(recording: &Recording, from_s: f64, to_s: f64) -> Recording {
     out
 }
 
-/// Duration of a recording, s.
-pub fn duration_s(recording: &Recording) -> f64 {
-    match (recording.time_s.first(), recording.time_s.last()) {
-        (Some(a), Some(b)) if recording.time_s.len() > 1 => {
-            (b - a) * recording.time_s.len() as f64 / (recording.time_s.len() - 1) as f64
-        }
-        _ => 0.0,
-    }
-}
-
 /// Analyses every recording.
 pub fn observe(
     recordings: &[LabelledRecording],
@@ -212,7 +184,7 @@ pub fn observe(
             .map_or(0.0, |s| s.mean_speed_rpm);
         let mut run = Run {
             label: lr.label.clone(),
-            regime: Regime::Steady {
+            regime: RunShape::Steady {
                 speed_rpm: reference_speed,
             },
             load: rec.meta.load,
@@ -228,9 +200,9 @@ pub fn observe(
                 .collect(),
             cycle_speeds_rpm: Vec::new(),
         };
-        let noise = match analysis.kind {
-            RunKind::Steady if duration >= LONG_RUN_S => {
-                run.regime = Regime::LongRun {
+        let noise = match classify(rec) {
+            RunShape::LongRun { .. } => {
+                run.regime = RunShape::LongRun {
                     speed_rpm: reference_speed,
                 };
                 let (noise, cycles) =
@@ -238,7 +210,7 @@ pub fn observe(
                 run.cycle_speeds_rpm = cycles;
                 noise
             }
-            RunKind::Steady => {
+            RunShape::Steady { .. } => {
                 run.cycle_speeds_rpm =
                     vec![cycle_speeds(rec, &analysis.reference, analysis.cycle_rev)];
                 let noise = steady_noise(rec, duration, &options, &analysis).map_err(fail)?;
@@ -255,14 +227,14 @@ pub fn observe(
                     .map(|s| sample_noise(*s, rec.time_s.len()))
                     .collect()
             }
-            RunKind::RunUp => {
+            RunShape::Ramp { .. } => {
                 let t0 = rec.time_s.first().copied().unwrap_or(0.0);
                 let (from, to, speeds) = ramp_of(&analysis, t0, duration).map_err(fail)?;
                 run.window_times_s = analysis
                     .stft
                     .as_ref()
                     .map_or(Vec::new(), |s| s.times_s.clone());
-                run.regime = Regime::RunUp {
+                run.regime = RunShape::Ramp {
                     from_rpm: from,
                     to_rpm: to,
                 };

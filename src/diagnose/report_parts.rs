@@ -3,8 +3,8 @@
 //! recordings used.
 
 use super::context::{Context, Evaluated};
-use super::decide::{kind_label, run_roles, validated_on};
-use super::observe::Regime;
+use super::decide::{run_roles, validated_on};
+use super::observe::RunShape;
 use super::report::*;
 use crate::physics::{OperatingPoint, System};
 
@@ -66,12 +66,12 @@ pub fn assemble(
         .zip(roles)
         .map(|(r, role)| RecordingUse {
             label: r.label.clone(),
-            kind: kind_label(&r.regime).into(),
+            kind: r.regime.label().into(),
             speed_rpm: match r.regime {
-                Regime::Steady { speed_rpm } | Regime::LongRun { speed_rpm } => {
+                RunShape::Steady { speed_rpm } | RunShape::LongRun { speed_rpm } => {
                     [speed_rpm, speed_rpm]
                 }
-                Regime::RunUp { from_rpm, to_rpm } => [from_rpm, to_rpm],
+                RunShape::Ramp { from_rpm, to_rpm } => [from_rpm, to_rpm],
             },
             load: r.load,
             role,
@@ -111,7 +111,7 @@ fn resonances(cx: &Context, baseline: &Evaluated) -> Vec<Resonance> {
         .unwrap_or_default();
     let mut out: Vec<Resonance> = Vec::new();
     for (i, o) in obs.observations.iter().enumerate() {
-        if !matches!(obs.runs[o.run].regime, Regime::RunUp { .. }) {
+        if !matches!(obs.runs[o.run].regime, RunShape::Ramp { .. }) {
             continue;
         }
         // A local peak of the measured track.
@@ -165,9 +165,9 @@ fn overlays(cx: &Context, before: &Evaluated, after: &Evaluated) -> Vec<Overlay>
         }
         let run = &obs.runs[o.run];
         let kind = match run.regime {
-            Regime::Steady { .. } => 0,
-            Regime::LongRun { .. } => 1,
-            Regime::RunUp { .. } => 2,
+            RunShape::Steady { .. } => 0,
+            RunShape::LongRun { .. } => 1,
+            RunShape::Ramp { .. } => 2,
         };
         let key = (
             kind,

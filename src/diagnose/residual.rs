@@ -8,7 +8,7 @@
 //! of one averaged estimate (a run-up bin averages window magnitudes: its spread falls
 //! with their number, its bias does not) and `σ` that of `a` itself.
 
-use super::observe::{Observed, Regime};
+use super::observe::{Observed, RunShape};
 use std::f64::consts::FRAC_PI_2;
 
 /// Relative accuracy asked of the simulation itself (integration tolerance, the
@@ -32,7 +32,7 @@ pub fn z_scores(observed: &Observed, simulated: &[f64]) -> Vec<f64> {
         .zip(simulated)
         .map(|(o, &a)| {
             let floor = match observed.runs[o.run].regime {
-                Regime::RunUp { .. } => FLOOR_RUN_UP,
+                RunShape::Ramp { .. } => FLOOR_RUN_UP,
                 _ => FLOOR,
             };
             let sigma = (o.sigma_rpm.powi(2) + (floor * a).powi(2)).sqrt();

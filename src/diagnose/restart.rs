@@ -17,7 +17,7 @@ use super::DiagnoseError;
 use super::context::{Context, Evaluated};
 use super::screen::{Screened, linear_sees};
 use super::trial;
-use crate::synth::Effect;
+use crate::effects::Effect;
 
 /// Levenberg–Marquardt steps of a second start: it only has to reach the right valley
 /// (the surrogate is coarse there anyway); the time-domain rounds of its verification

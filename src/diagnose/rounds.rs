@@ -9,7 +9,7 @@ use super::fit::{levenberg_marquardt, parallel_map};
 use super::sensor;
 use super::surrogate::{ratios, scaled};
 use super::trial;
-use crate::synth::Effect;
+use crate::effects::Effect;
 
 /// Rounds stop when χ²/N on the fitted data improves by less than this fraction.
 const ROUND_GAIN: f64 = 0.005;

@@ -4,7 +4,7 @@
 
 use super::candidates::candidates;
 use super::context::Context;
-use super::observe::{Regime, observe};
+use super::observe::{RunShape, observe};
 use super::restart::second_starts;
 use super::screen::{Screened, VERIFY_ROUNDS, screen_one, verify};
 use super::surrogate::plain_parameters;
@@ -76,7 +76,7 @@ pub fn diagnose(
         .observed
         .runs
         .iter()
-        .any(|r| matches!(r.regime, Regime::LongRun { .. }));
+        .any(|r| matches!(r.regime, RunShape::LongRun { .. }));
     let list = candidates(model, &stations, long_run);
     let mut screened: Vec<Screened> = Vec::new();
     let mut implausible: Vec<(String, String)> = Vec::new();

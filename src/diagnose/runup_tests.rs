@@ -4,7 +4,7 @@
 
 use super::LabelledRecording;
 use super::forward::predict;
-use super::observe::{Observed, Regime, observe};
+use super::observe::{Observed, RunShape, observe};
 use super::settling::slowest_decay_s;
 use crate::modal::{damped_modes, modes};
 use crate::model::{Model, parse_model};
@@ -124,7 +124,7 @@ fn segmented_run_up_passes_a_light_mode_like_one_run() {
     let (from, to, duration) = (0.7 * crossing_rpm, 1.36 * crossing_rpm, 12.0);
     let rec = truth(&model, from, to, duration);
     let observed = observe(&[rec], 8.0).unwrap();
-    assert!(matches!(observed.runs[0].regime, Regime::RunUp { .. }));
+    assert!(matches!(observed.runs[0].regime, RunShape::Ramp { .. }));
     let simulated = predict(&model, &observed, 8.0, 2, None).unwrap();
     let (diff, peak) = worst(&observed, &simulated, 2.0);
     assert!(peak > 10.0, "the crossing must show: peak {peak} rpm");

@@ -9,12 +9,12 @@ use super::DiagnoseError;
 use super::candidates::Candidate;
 use super::context::{Context, Evaluated};
 use super::drift::{DRIFT_CHI2, long_run_drift};
-use super::observe::Regime;
+use super::observe::RunShape;
 use super::surrogate::{causal_system, run_speeds};
 use super::trial;
 use crate::physics::Excitation;
 use crate::response::forced_response_orders;
-use crate::synth::Effect;
+use crate::effects::Effect;
 
 /// A screened candidate must lower the plain fit's score on the fitted data by this
 /// fraction to be verified in the time domain. Zero: any gain will do. The linear
@@ -75,7 +75,7 @@ pub fn linear_sees(effect: Effect) -> bool {
 }
 
 /// The runs of `cx` whose regime passes `keep`.
-fn runs_where(cx: &Context, keep: impl Fn(&Regime) -> bool) -> Vec<bool> {
+fn runs_where(cx: &Context, keep: impl Fn(&RunShape) -> bool) -> Vec<bool> {
     cx.observed.runs.iter().map(|r| keep(&r.regime)).collect()
 }
 
@@ -142,7 +142,7 @@ pub fn screen_one(
             let mut runs = torque_reversal_runs(cx, plain, gear);
             // The steady regimes that show it are enough to screen on, and cheap; a
             // run-up (backlash slows its simulation several times) only without them.
-            let steady = runs_where(cx, |r| !matches!(r, Regime::RunUp { .. }));
+            let steady = runs_where(cx, |r| !matches!(r, RunShape::Ramp { .. }));
             if runs.iter().zip(&steady).any(|(a, b)| *a && *b) {
                 runs.iter_mut().zip(&steady).for_each(|(a, b)| *a &= *b);
             }
@@ -173,7 +173,7 @@ pub fn screen_one(
             // A rubber stage warms up in the long runs and run-ups (the steady regimes are
             // simulated for a few cycles only). The long run alone leaves its heat
             // capacity loose (4700 J/K for 300 on the reference campaign).
-            let long = runs_where(cx, |r| !matches!(r, Regime::Steady { .. }));
+            let long = runs_where(cx, |r| !matches!(r, RunShape::Steady { .. }));
             (
                 in_time(cx.fit_time_domain(plain, c, &long)?),
                 false,

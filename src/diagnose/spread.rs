@@ -8,7 +8,7 @@
 //! model ([`crate::response`]), scales it to the mean over the measured cycle speeds:
 //! `mean_c A(n_c) / A(n̄)`.
 
-use super::observe::{Observed, Regime};
+use super::observe::{Observed, RunShape};
 use super::surrogate::{causal_system, run_speeds};
 use crate::model::Model;
 use crate::physics::Excitation;
@@ -37,8 +37,8 @@ pub fn spread_factors(model: &Model, observed: &Observed) -> Vec<f64> {
     let mut factors = vec![1.0; observed.observations.len()];
     for (r, run) in observed.runs.iter().enumerate() {
         let mean = match run.regime {
-            Regime::Steady { speed_rpm } | Regime::LongRun { speed_rpm } => speed_rpm,
-            Regime::RunUp { .. } => continue,
+            RunShape::Steady { speed_rpm } | RunShape::LongRun { speed_rpm } => speed_rpm,
+            RunShape::Ramp { .. } => continue,
         };
         let Some(system) = causal_system(model, run.load, run_speeds(observed, r)) else {
             continue;

@@ -7,15 +7,15 @@
 //! time-domain run at its result, which is what gets scored.
 //!
 //! The plain parameters are every inertia and every stiffness of the model
-//! ([`crate::synth::param_error::parameter_names`]), fitted as scale factors.
+//! ([`crate::effects::param_error::parameter_names`]), fitted as scale factors.
 
-use super::observe::{Observed, Regime};
+use super::observe::{Observed, RunShape};
 use super::sensor::{self, TapeJoint};
 use super::spread::spread_factors;
+use crate::effects::param_error::{parameter_names, scale_parameter};
 use crate::model::{ConnectionKind, Model};
 use crate::physics::{ElementLaw, Excitation, OperatingPoint, System};
 use crate::response::forced_response_orders;
-use crate::synth::param_error::{parameter_names, scale_parameter};
 use crate::transient::maxwell::{MaxwellChain, excited_band_hz};
 
 /// A plain parameter: its full name (`connection.shaft.stiffness`) and the node or
@@ -57,8 +57,8 @@ pub fn scaled(model: &Model, plain: &[Plain], factors: &[f64]) -> Result<Model, 
 /// The speeds a run's time-domain rubber chain is fitted for, rpm: `[lo, hi]`.
 pub fn run_speeds(observed: &Observed, run: usize) -> [f64; 2] {
     match observed.runs[run].regime {
-        Regime::Steady { speed_rpm } | Regime::LongRun { speed_rpm } => [speed_rpm, speed_rpm],
-        Regime::RunUp { from_rpm, to_rpm } => [from_rpm.min(to_rpm), from_rpm.max(to_rpm)],
+        RunShape::Steady { speed_rpm } | RunShape::LongRun { speed_rpm } => [speed_rpm, speed_rpm],
+        RunShape::Ramp { from_rpm, to_rpm } => [from_rpm.min(to_rpm), from_rpm.max(to_rpm)],
     }
 }
 
@@ -131,8 +131,8 @@ pub fn linear_predict(
         orders.sort_by(f64::total_cmp);
         orders.dedup();
         let mut speeds: Vec<f64> = match run.regime {
-            Regime::Steady { speed_rpm } | Regime::LongRun { speed_rpm } => vec![speed_rpm],
-            Regime::RunUp { .. } => mine
+            RunShape::Steady { speed_rpm } | RunShape::LongRun { speed_rpm } => vec![speed_rpm],
+            RunShape::Ramp { .. } => mine
                 .iter()
                 .map(|i| observed.observations[*i].speed_rpm)
                 .collect(),

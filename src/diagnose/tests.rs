@@ -2,11 +2,11 @@
 
 use super::LabelledRecording;
 use super::holdout::held_out;
-use super::observe::{Regime, cycle_speeds, observe};
+use super::observe::{RunShape, cycle_speeds, observe};
 use super::residual::expected;
 use super::sensor::sinc;
+use crate::effects::rng::Rng;
 use crate::recording::{Channel, ChannelKind, Recording, RecordingMeta, RunKind};
-use crate::synth::rng::Rng;
 use std::f64::consts::TAU;
 
 /// A steady recording of the crank at `speed_rpm` with order 2 (`a2` rpm) and order 4
@@ -69,7 +69,7 @@ fn a_steady_record_gives_its_orders_and_its_noise() {
         sigma > 0.5 * theory && sigma < 2.0 * theory,
         "σ {sigma} vs {theory}"
     );
-    assert!(matches!(observed.runs[0].regime, Regime::Steady { .. }));
+    assert!(matches!(observed.runs[0].regime, RunShape::Steady { .. }));
     // 2000 samples at 2 kHz span 1999 intervals, 0.9995 s at 3000 rpm: 24 whole working
     // cycles (the 25th is 0.05 % short), each at the mean speed within noise.
     let cycles = cycle_speeds(&observed_recording(), "engine", 2.0);

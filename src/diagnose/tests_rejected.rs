@@ -5,7 +5,7 @@
 use super::{DiagnoseError, DiagnoseOptions, LabelledRecording, diagnose, trial};
 use crate::model::parse_model;
 use crate::recording::read_recording;
-use crate::synth::Effect;
+use crate::effects::Effect;
 use std::path::{Path, PathBuf};
 
 fn case(name: &str) -> (crate::model::Model, Vec<LabelledRecording>) {

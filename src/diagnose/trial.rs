@@ -56,13 +56,13 @@ pub fn reason(what: &str, e: &DiagnoseError) -> String {
 }
 
 #[cfg(test)]
-static INJECTED: std::sync::Mutex<Vec<(crate::synth::Effect, DiagnoseError)>> =
+static INJECTED: std::sync::Mutex<Vec<(crate::effects::Effect, DiagnoseError)>> =
     std::sync::Mutex::new(Vec::new());
 
 /// Test seam: every simulation of a candidate of `effect` fails with `error` from now on
 /// (no test but the one that sets it runs a whole diagnosis in the library's tests).
 #[cfg(test)]
-pub fn inject_failure(effect: crate::synth::Effect, error: DiagnoseError) {
+pub fn inject_failure(effect: crate::effects::Effect, error: DiagnoseError) {
     if let Ok(mut v) = INJECTED.lock() {
         v.push((effect, error));
     }

@@ -13,7 +13,7 @@ use std::sync::Arc;
 use std::time::SystemTime;
 use torsim::model::{ConnectionKind, GROUND, Model};
 use torsim::physics::System;
-use torsim::recording::{self, Recording, read_recording};
+use torsim::recording::{Recording, RunShape, classify, read_recording, shape};
 use torsim::signal::{Analysis, AnalysisOptions, analyse_with};
 use torsim::transient::RunKind;
 
@@ -137,16 +137,10 @@ fn read(path: &Path, nodes: &[String], options: &AnalysisOptions) -> Result<Reco
     let analysis = analyse_with(&recording, &options)
         .map_err(|e| format!("{}: cannot analyse: {e}", path.display()))?;
     let t0_s = recording.time_s.first().copied().unwrap_or(0.0);
-    let regime =
-        regime_of(&recording, &analysis).map_err(|e| format!("{}: {e}", path.display()))?;
+    let regime = regime_of(&recording).map_err(|e| format!("{}: {e}", path.display()))?;
     let stations: Vec<&str> = recording.speed_stations().iter().map(|s| s.0).collect();
     let duration_s = recording.time_s.last().copied().unwrap_or(0.0) - t0_s;
-    let what = match regime {
-        RunKind::Steady { speed_rpm, .. } => format!("steady {speed_rpm:.0} rpm"),
-        RunKind::Ramp {
-            from_rpm, to_rpm, ..
-        } => format!("run-up {from_rpm:.0} to {to_rpm:.0} rpm"),
-    };
+    let what = classify(&recording).describe();
     let label = recording
         .meta
         .label
@@ -204,41 +198,22 @@ pub fn max_frequency_hz(analysis: &Analysis) -> f64 {
     })
 }
 
-/// The simulated run matching a recording: a steady run at its nominal speed (or the
-/// reference's mean) for its duration (at most 20 s), or a linear ramp between the
-/// least-squares line's ends of the reference speed over its duration. The duration of
-/// `n` uniform samples is `n` intervals.
-pub fn regime_of(recording: &Recording, analysis: &Analysis) -> Result<RunKind, String> {
-    let t = &recording.time_s;
-    let (t0, t1) = (t[0], t[t.len() - 1]);
-    // n samples cover n sampling intervals (as a simulation of that duration records).
-    let duration_s = (t1 - t0) * t.len() as f64 / (t.len() - 1).max(1) as f64;
-    let reference = recording
-        .speed_rpm(&recording.meta.reference)
-        .ok_or_else(|| format!("no `{}_rpm` column", recording.meta.reference))?;
-    match recording.meta.kind {
-        recording::RunKind::Steady => {
-            let mean = analysis
-                .stations
-                .iter()
-                .find(|s| s.name == analysis.reference)
-                .map_or(0.0, |s| s.mean_speed_rpm);
-            Ok(RunKind::Steady {
-                speed_rpm: recording.meta.speed_rpm.unwrap_or(mean),
-                duration_s: duration_s.min(20.0),
-            })
-        }
-        recording::RunKind::RunUp => {
-            let n = t.len() as f64;
-            let tm = t.iter().sum::<f64>() / n;
-            let vm = reference.iter().sum::<f64>() / n;
-            let (mut sxy, mut sxx) = (0.0, 0.0);
-            for (ti, vi) in t.iter().zip(reference) {
-                sxy += (ti - tm) * (vi - vm);
-                sxx += (ti - tm) * (ti - tm);
-            }
-            let slope = sxy / sxx.max(f64::MIN_POSITIVE);
-            let (from_rpm, to_rpm) = (vm + slope * (t0 - tm), vm + slope * (t0 + duration_s - tm));
+/// The simulated run matching a recording, by the classifier the diagnosis uses
+/// ([`torsim::recording::classify`]): a steady run (or a long run) at its nominal speed
+/// (or the reference's mean) for its duration (at most 20 s), or a linear ramp between
+/// the least-squares line's ends of the reference speed over its duration. The duration
+/// of `n` uniform samples is `n` intervals.
+pub fn regime_of(recording: &Recording) -> Result<RunKind, String> {
+    if recording.speed_rpm(&recording.meta.reference).is_none() {
+        return Err(format!("no `{}_rpm` column", recording.meta.reference));
+    }
+    let duration_s = shape::duration_s(recording);
+    match classify(recording) {
+        RunShape::Steady { speed_rpm } | RunShape::LongRun { speed_rpm } => Ok(RunKind::Steady {
+            speed_rpm,
+            duration_s: duration_s.min(20.0),
+        }),
+        RunShape::Ramp { from_rpm, to_rpm } => {
             if from_rpm <= 0.0 || to_rpm <= 0.0 {
                 return Err(format!(
                     "the reference speed fits a ramp {from_rpm:.0} to {to_rpm:.0} rpm: not a run-up above 0 rpm"

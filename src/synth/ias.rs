@@ -10,9 +10,9 @@
 //! turning at 1/3 of engine speed); content above 0.45 × the output rate is filtered out.
 
 use super::fir::Decimator;
-use super::rng::Rng;
 use super::shaft_angle::ShaftAngle;
 use super::wobble::Wobble;
+use crate::effects::rng::Rng;
 use std::f64::consts::TAU;
 
 /// How one station's pulses become samples.

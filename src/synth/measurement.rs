@@ -4,8 +4,9 @@
 
 use super::SynthError;
 use super::plan::Plan;
-use super::sensor::{SensorArtifact, Station};
-use super::truth::Truth;
+use super::station::Station;
+use crate::effects::SensorArtifact;
+use crate::effects::Truth;
 use crate::model::graph;
 
 /// How the bench measures (defaults: [`Measurement::default`]).

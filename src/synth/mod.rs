@@ -2,9 +2,10 @@
 //! data"): recordings made from a richer model than the one the user has.
 //!
 //! 1. [`build_truth`]: the user's model with plain parameter errors (every inertia and
-//!    stiffness off by a seeded factor within ±P %, [`param_error`]) and one effect of the
-//!    spec's table added with physically sensible values ([`truth_rubber`],
-//!    [`truth_hysteretic`], [`truth_structure`], or a [`SensorArtifact`]); the model format got one extension
+//!    stiffness off by a seeded factor within ±P %, [`crate::effects::param_error`]) and
+//!    one effect of the spec's table added with physically sensible values — the effect
+//!    models are the library's, [`crate::effects`] (rubber, hysteretic, structure, or a
+//!    [`SensorArtifact`]); the model format got one extension
 //!    for it, `[engine] pressure_scale` (cylinder imbalance).
 //! 2. [`Plan`]: the recordings of a campaign — by default regimes A–F at full load, two at
 //!    part load, one long steady run and a slow full-load run-up.
@@ -18,7 +19,8 @@
 //! 4. [`truth_toml`]: what the recordings really contain, for tests; the diagnosis must
 //!    not read it.
 //!
-//! Everything is deterministic for a seed: the random draws come from [`rng`], streams
+//! Everything is deterministic for a seed: the random draws come from [`rng`]
+//! ([`crate::effects::rng`]), streams
 //! per purpose, so one setting does not shift another's draws.
 //!
 //! ```
@@ -34,33 +36,29 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-pub mod effect;
 pub mod fir;
 pub mod generate;
 pub mod ias;
 pub mod measurement;
-pub mod param_error;
 pub mod plan;
 pub mod plan_file;
-pub mod rng;
-pub mod sensor;
 pub mod shaft_angle;
-pub mod truth;
+pub mod station;
 pub mod truth_file;
-pub mod truth_hysteretic;
-pub mod truth_rubber;
-pub mod truth_structure;
 pub mod wobble;
 
-pub use effect::{Effect, EffectSpec, ParamValue};
+pub use crate::effects::rng;
+pub use crate::effects::{
+    AppliedEffect, Effect, EffectSpec, ParamValue, ParameterError, SensorArtifact, Truth,
+    build_truth,
+};
 pub use generate::{SynthRecording, generate};
 pub use measurement::{Measurement, time_stamps};
-pub use param_error::ParameterError;
 pub use plan::{Plan, PlanDurations, PlannedKind, PlannedRun};
-pub use sensor::{SensorArtifact, Station};
-pub use truth::{AppliedEffect, Truth, build_truth};
+pub use station::Station;
 pub use truth_file::{TRUTH_FILE, TRUTH_MODEL_FILE, truth_toml};
 
+use crate::effects::EffectError;
 use crate::transient::TransientError;
 
 /// Why synthetic data could not be made.
@@ -85,4 +83,13 @@ pub enum SynthError {
         /// Why.
         message: String,
     },
+}
+
+/// An effect's bad input is the synthesis's bad input, with the same message.
+impl From<EffectError> for SynthError {
+    fn from(e: EffectError) -> Self {
+        match e {
+            EffectError::Input(message) => SynthError::Input(message),
+        }
+    }
 }

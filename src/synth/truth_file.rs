@@ -3,11 +3,11 @@
 //! command. It sits beside the recordings for the tests that check a diagnosis; nothing in
 //! the library reads it, and the diagnosis must not.
 
-use super::effect::ParamValue;
 use super::measurement::Measurement;
 use super::plan::{Plan, PlannedKind};
-use super::sensor::SensorArtifact;
-use super::truth::Truth;
+use crate::effects::ParamValue;
+use crate::effects::SensorArtifact;
+use crate::effects::Truth;
 use std::fmt::Write;
 
 /// The file name of the truth in a generated folder.

@@ -10,7 +10,7 @@
 //! of the resonance curve, which a wobble of 0.1–0.5 % keeps small. The phases come from
 //! the seed.
 
-use super::rng::Rng;
+use crate::effects::rng::Rng;
 use std::f64::consts::TAU;
 
 /// The wobble of one recording.

@@ -6,8 +6,7 @@
 use crossbeam_channel::{Receiver, bounded};
 use std::path::{Path, PathBuf};
 use torsim::diagnose::LabelledRecording;
-use torsim::diagnose::observe::LONG_RUN_S;
-use torsim::recording::{RunKind, read_recording};
+use torsim::recording::{RunShape, classify, read_recording};
 
 /// A recording in the diagnosis list.
 #[derive(Debug, Clone)]
@@ -16,11 +15,9 @@ pub struct LoadedRecording {
     pub path: PathBuf,
     /// The recording with its label (sidecar `label`, else the file stem).
     pub labelled: LabelledRecording,
-    /// `"steady"`, `"long run"` (steady for at least [`LONG_RUN_S`]) or `"run-up"`.
-    pub kind: &'static str,
-    /// Mean reference speed (steady: the sidecar's, else the samples'), or the speeds at
-    /// start and end (run-up), rpm.
-    pub speed_rpm: [f64; 2],
+    /// Steady, long run or ramp with its speeds, by the classifier the diagnosis uses
+    /// ([`torsim::recording::classify`]); shown as its [`RunShape::label`].
+    pub shape: RunShape,
     /// Engine load 0..1 (sidecar).
     pub load: f64,
     /// Duration, s.
@@ -30,8 +27,8 @@ pub struct LoadedRecording {
 impl LoadedRecording {
     /// `"3960 rpm"` or `"1000 to 6000 rpm"`.
     pub fn speed_text(&self) -> String {
-        let [a, b] = self.speed_rpm;
-        if self.kind == "run-up" {
+        let [a, b] = self.shape.speeds_rpm();
+        if self.shape.is_ramp() {
             format!("{a:.0} to {b:.0} rpm")
         } else {
             format!("{a:.0} rpm")
@@ -43,45 +40,6 @@ impl LoadedRecording {
 /// could not be.
 pub type Loaded = (Vec<LoadedRecording>, Vec<String>);
 
-/// Mean of `v` (0 when empty).
-fn mean(v: &[f64]) -> f64 {
-    if v.is_empty() {
-        0.0
-    } else {
-        v.iter().sum::<f64>() / v.len() as f64
-    }
-}
-
-/// The straight line through `(t, v)` by least squares, at `at` (the mean of `v` when
-/// `t` does not vary).
-fn line_at(t: &[f64], v: &[f64], at: f64) -> f64 {
-    let (tm, vm) = (mean(t), mean(v));
-    let (mut stv, mut stt) = (0.0, 0.0);
-    for (x, y) in t.iter().zip(v) {
-        stv += (x - tm) * (y - vm);
-        stt += (x - tm) * (x - tm);
-    }
-    if stt > 0.0 {
-        vm + stv / stt * (at - tm)
-    } else {
-        vm
-    }
-}
-
-/// A run-up's speeds at its first and last sample: a straight line fitted to its first
-/// and to its last 5 % (the vibration averages out, the ramp does not bias it).
-fn run_up_ends(t: &[f64], v: &[f64]) -> [f64; 2] {
-    let n = t.len().min(v.len());
-    if n == 0 {
-        return [0.0, 0.0];
-    }
-    let k = (n / 20).max(2).min(n);
-    [
-        line_at(&t[..k], &v[..k], t[0]),
-        line_at(&t[n - k..n], &v[n - k..n], t[n - 1]),
-    ]
-}
-
 /// Reads one recording and describes it.
 pub fn read_one(path: &Path, nodes: &[String]) -> Result<LoadedRecording, String> {
     let recording = read_recording(path, Some(nodes)).map_err(|e| e.to_string())?;
@@ -90,30 +48,17 @@ pub fn read_one(path: &Path, nodes: &[String]) -> Result<LoadedRecording, String
         |s| s.to_string_lossy().into_owned(),
     );
     let meta = &recording.meta;
-    let reference = recording.speed_rpm(&meta.reference).unwrap_or(&[]);
     let duration_s = match (recording.time_s.first(), recording.time_s.last()) {
         (Some(a), Some(b)) => b - a,
         _ => 0.0,
     };
-    let (kind, speed_rpm) = match meta.kind {
-        RunKind::RunUp => ("run-up", run_up_ends(&recording.time_s, reference)),
-        RunKind::Steady => {
-            let s = meta.speed_rpm.unwrap_or_else(|| mean(reference));
-            let kind = if duration_s >= LONG_RUN_S {
-                "long run"
-            } else {
-                "steady"
-            };
-            (kind, [s, s])
-        }
-    };
+    let shape = classify(&recording);
     let label = meta.label.clone().unwrap_or(stem);
     let load = meta.load;
     Ok(LoadedRecording {
         path: path.to_path_buf(),
         labelled: LabelledRecording { label, recording },
-        kind,
-        speed_rpm,
+        shape,
         load,
         duration_s,
     })
@@ -192,30 +137,5 @@ pub fn unique_label(label: &str, path: &Path, taken: &[&str]) -> String {
         format!("{label} ({name})")
     } else {
         label.to_string()
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// A 1000 to 6000 rpm ramp in 20 s with ±20 rpm of order-2 vibration at 1 kHz
-    /// sampling: the ends come out within 1 rpm (the mean over the first 5 % would be
-    /// 125 rpm off).
-    #[test]
-    fn run_up_ends_follow_the_ramp_not_the_window_mean() {
-        let t: Vec<f64> = (0..20_000).map(|i| f64::from(i) * 1e-3).collect();
-        let v: Vec<f64> = t
-            .iter()
-            .map(|&t| {
-                let n = 1000.0 + 250.0 * t;
-                n + 20.0 * (2.0 * std::f64::consts::PI * 2.0 * n / 60.0 * t).sin()
-            })
-            .collect();
-        let [a, b] = run_up_ends(&t, &v);
-        assert!((a - 1000.0).abs() < 1.0, "{a}");
-        assert!((b - (1000.0 + 250.0 * 19.999)).abs() < 1.0, "{b}");
-        assert_eq!(run_up_ends(&[], &[]), [0.0, 0.0]);
-        assert_eq!(line_at(&[1.0, 1.0], &[2.0, 4.0], 5.0), 3.0);
     }
 }

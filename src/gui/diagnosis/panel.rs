@@ -149,7 +149,7 @@ fn recordings_ui(app: &mut TorsimApp, ui: &mut Ui) {
                     for (i, r) in d.recordings.iter().enumerate() {
                         let label = &r.labelled.label;
                         ui.label(label);
-                        ui.label(r.kind);
+                        ui.label(r.shape.label());
                         ui.label(r.speed_text());
                         ui.label(format!("{:.0} %", 100.0 * r.load));
                         ui.label(format!("{:.1} s", r.duration_s));

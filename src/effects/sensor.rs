@@ -1,85 +1,14 @@
-//! The bench's sensors: a zebra tape or an encoder with N lines per revolution at each
-//! measured station (seed 001: optical probes on zebra tapes of 78 and 94 lines), and the
-//! artifacts a real one has — the butt joint of a zebra tape (one line interval too long
+//! The artifacts of a bench's sensors (a zebra tape or an encoder with N lines per
+//! revolution at each measured station, seed 001: optical probes on zebra tapes of 78 and
+//! 94 lines): the ones a real one has — the butt joint of a zebra tape (one line interval too long
 //! or short, compensated on real benches by Janssens et al.'s algorithm, seed 001 ref.
 //! [10]) and a once-per-revolution pitch error (an eccentric tape or encoder disc).
 
-use super::SynthError;
+use super::EffectError;
 use super::effect::{EffectSpec, Params};
 use super::truth::Applied;
 use crate::model::{Model, graph};
 use std::f64::consts::TAU;
-
-/// How a station's pulses are made.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Station {
-    /// The model node measured (its IAS in its own shaft).
-    pub node: String,
-    /// `"zebra"` or `"encoder"` (written to the sidecar's `[sensors.<node>]`).
-    pub kind: String,
-    /// Lines (pulses) per revolution.
-    pub lines_per_rev: u32,
-}
-
-impl Station {
-    /// Parses `NODE[:KIND[:LINES]]` (the CLI's `--station`); kind `zebra` (default 78
-    /// lines, seed 001's engine-side tape) or `encoder` (default 360 lines).
-    pub fn parse(text: &str) -> Result<Self, SynthError> {
-        let mut parts = text.split(':').map(str::trim);
-        let node = parts.next().unwrap_or_default().to_string();
-        let kind = parts.next().unwrap_or("zebra").to_string();
-        let default_lines = match kind.as_str() {
-            "zebra" => 78,
-            "encoder" => 360,
-            other => {
-                return Err(SynthError::Input(format!(
-                    "--station `{text}`: sensor kind `{other}` (expected zebra or encoder)"
-                )));
-            }
-        };
-        let lines = match parts.next() {
-            None => default_lines,
-            Some(n) => n.parse::<u32>().ok().filter(|n| *n >= 4).ok_or_else(|| {
-                SynthError::Input(format!("--station `{text}`: lines `{n}` must be ≥ 4"))
-            })?,
-        };
-        if node.is_empty() || parts.next().is_some() {
-            return Err(SynthError::Input(format!(
-                "--station `{text}`: expected NODE[:zebra|encoder[:LINES]]"
-            )));
-        }
-        Ok(Self {
-            node,
-            kind,
-            lines_per_rev: lines,
-        })
-    }
-
-    /// A bench's usual stations on `model`: the reference node (crank) with a 360-line
-    /// encoder, and the engine side of the coupling ([`coupling_side`]) with a 78-line
-    /// zebra tape (seed 001's n_c and n_es), when that is another node.
-    pub fn defaults(model: &Model) -> Vec<Self> {
-        let mut out = Vec::new();
-        if let Some(r) = graph::reference_node(model) {
-            out.push(Self {
-                node: model.inertias[r].name.clone(),
-                kind: "encoder".into(),
-                lines_per_rev: 360,
-            });
-        }
-        if let Some(node) = coupling_side(model)
-            && model.node_index(&node).is_some()
-            && out.iter().all(|s| s.node != node)
-        {
-            out.push(Self {
-                node,
-                kind: "zebra".into(),
-                lines_per_rev: 78,
-            });
-        }
-        out
-    }
-}
 
 /// The engine-side node of the coupling: the `from` node of the first rubber stage, or of
 /// the softest shaft when there is none (a coupling modelled as spring and damper).
@@ -139,9 +68,9 @@ impl SensorArtifact {
 
     /// Parses `tape_joint:NODE:FRACTION` or `pitch_error:NODE:DEG` (the CLI's
     /// `--sensor-artifact`).
-    pub fn parse(text: &str) -> Result<Self, SynthError> {
+    pub fn parse(text: &str) -> Result<Self, EffectError> {
         let parts: Vec<&str> = text.split(':').map(str::trim).collect();
-        let bad = |m: &str| SynthError::Input(format!("--sensor-artifact `{text}`: {m}"));
+        let bad = |m: &str| EffectError::Input(format!("--sensor-artifact `{text}`: {m}"));
         let [kind, station, size] = parts.as_slice() else {
             return Err(bad(
                 "expected tape_joint:NODE:FRACTION or pitch_error:NODE:DEG",
@@ -178,13 +107,13 @@ impl SensorArtifact {
     }
 
     /// Effect `sensor_artifact`: `kind` (`tape_joint`, default, or `pitch_error`),
-    /// `station` (default the engine side of the coupling, where [`Station::defaults`] puts
+    /// `station` (default the engine side of the coupling, where a campaign's default stations puts
     /// a zebra tape; else the reference node) and `joint_fraction` (default 0.2) or
     /// `error_deg` (default 0.05).
     pub(crate) fn from_spec(
         spec: &EffectSpec,
         user: &Model,
-    ) -> Result<(Self, Applied), SynthError> {
+    ) -> Result<(Self, Applied), EffectError> {
         let mut p = Params::new(spec, &["kind", "station", "joint_fraction", "error_deg"])?;
         let kind = p.text("kind", Some("tape_joint".into()))?;
         let reference = graph::reference_node(user).map(|r| user.inertias[r].name.clone());
@@ -265,17 +194,6 @@ pub fn line_angles(lines: u32, artifacts: &[&SensorArtifact]) -> Vec<f64> {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn stations_parse() {
-        let s = Station::parse("coupling_es").unwrap();
-        assert_eq!((s.kind.as_str(), s.lines_per_rev), ("zebra", 78));
-        let s = Station::parse("engine:encoder:720").unwrap();
-        assert_eq!((s.kind.as_str(), s.lines_per_rev), ("encoder", 720));
-        assert!(Station::parse("engine:laser").is_err());
-        assert!(Station::parse("engine:zebra:2").is_err());
-        assert!(Station::parse(":zebra").is_err());
-    }
 
     #[test]
     fn tape_joint_keeps_one_revolution() {

@@ -2,7 +2,7 @@
 //! coupling mode), the reciprocating masses (crank-angle-dependent inertia, seed 001 eq.
 //! 3–4), gear backlash, and one cylinder firing weaker or stronger.
 
-use super::SynthError;
+use super::EffectError;
 use super::effect::{EffectSpec, Params};
 use super::truth::Applied;
 use crate::model::{ConnectionKind, GROUND, Inertia, Model, RubberStiffness};
@@ -17,7 +17,10 @@ use std::f64::consts::TAU;
 /// `both`, half each, the default; or `from` or `to`, one end; ground gives none), so the
 /// total inertia is unchanged. The local mode of the middle node against held ends is
 /// `√((k_a + k_b)/J)/2π`.
-pub(crate) fn unmodelled_mode(model: &mut Model, spec: &EffectSpec) -> Result<Applied, SynthError> {
+pub(crate) fn unmodelled_mode(
+    model: &mut Model,
+    spec: &EffectSpec,
+) -> Result<Applied, EffectError> {
     let mut p = Params::new(
         spec,
         &["connection", "inertia_kg_m2", "split", "node", "take_from"],
@@ -140,7 +143,7 @@ pub(crate) fn unmodelled_mode(model: &mut Model, spec: &EffectSpec) -> Result<Ap
 /// into it, so the mean inertia is unchanged and only its variation with crank angle and
 /// the oscillating-mass torque are new. `drop_harmonics` (orders, comma separated,
 /// default `none`) removes the user's `[[harmonic]]` stand-ins for that torque.
-pub(crate) fn crank_inertia(model: &mut Model, spec: &EffectSpec) -> Result<Applied, SynthError> {
+pub(crate) fn crank_inertia(model: &mut Model, spec: &EffectSpec) -> Result<Applied, EffectError> {
     let mut p = Params::new(spec, &["mass_kg", "drop_harmonics"])?;
     let Some(engine) = model.engine.clone() else {
         return Err(p.bad("mass_kg", "the model has no [engine]"));
@@ -210,7 +213,7 @@ pub(crate) fn crank_inertia(model: &mut Model, spec: &EffectSpec) -> Result<Appl
 
 /// `gear_backlash`: gear `connection` (default the first with a mesh stiffness) has
 /// `backlash_deg` of total free play at its `to` side (default 0.2°).
-pub(crate) fn backlash(model: &mut Model, spec: &EffectSpec) -> Result<Applied, SynthError> {
+pub(crate) fn backlash(model: &mut Model, spec: &EffectSpec) -> Result<Applied, EffectError> {
     let mut p = Params::new(spec, &["connection", "backlash_deg"])?;
     let first = model
         .connections
@@ -243,7 +246,7 @@ pub(crate) fn backlash(model: &mut Model, spec: &EffectSpec) -> Result<Applied, 
 
 /// `cylinder_imbalance`: cylinder `cylinder` (from 1, default 1) has its gauge pressure
 /// scaled by `pressure_scale` (default 0.85), through `[engine] pressure_scale`.
-pub(crate) fn imbalance(model: &mut Model, spec: &EffectSpec) -> Result<Applied, SynthError> {
+pub(crate) fn imbalance(model: &mut Model, spec: &EffectSpec) -> Result<Applied, EffectError> {
     let mut p = Params::new(spec, &["cylinder", "pressure_scale"])?;
     let Some(e) = model.engine.as_mut() else {
         return Err(p.bad("cylinder", "the model has no [engine]"));

@@ -1,13 +1,13 @@
 //! The truth: the user's model with plain parameter errors, then one effect added with
 //! physically sensible values ([`build_truth`]). The effects on rubber stages are in
-//! [`super::truth_rubber`], those on the structure and the engine in
-//! [`super::truth_structure`]; a sensor artifact leaves the driveline alone and is
+//! [`super::rubber`], those on the structure and the engine in
+//! [`super::structure`]; a sensor artifact leaves the driveline alone and is
 //! carried to the measurement.
 
 use super::effect::{Effect, EffectSpec, ParamValue, Params};
 use super::param_error::{ParameterError, apply_random_errors, scale_parameter};
 use super::sensor::SensorArtifact;
-use super::{SynthError, truth_hysteretic, truth_rubber, truth_structure};
+use super::{EffectError, hysteretic, rubber, structure};
 use crate::model::{ConnectionKind, Model, validate};
 use crate::physics::{OperatingPoint, System};
 
@@ -47,10 +47,10 @@ pub fn build_truth(
     spec: &EffectSpec,
     param_error_pct: f64,
     seed: u64,
-) -> Result<Truth, SynthError> {
-    validate(user).map_err(|e| SynthError::Input(format!("the user's model: {e}")))?;
+) -> Result<Truth, EffectError> {
+    validate(user).map_err(|e| EffectError::Input(format!("the user's model: {e}")))?;
     if spec.effect == Effect::None && param_error_pct != 0.0 {
-        return Err(SynthError::Input(
+        return Err(EffectError::Input(
             "effect `none` means the model and the recordings agree: --param-error-pct must \
              be 0 (use --effect parameter_error for values that are off)"
                 .into(),
@@ -68,14 +68,14 @@ pub fn build_truth(
             )
         }
         Effect::ParameterError => parameter_error(&mut model, user, spec, &mut errors)?,
-        Effect::CouplingAmplitudeNonlinearity => truth_rubber::amplitude(&mut model, spec)?,
-        Effect::CouplingFrequencyDependence => truth_rubber::frequency(&mut model, user, spec)?,
-        Effect::CouplingThermalDrift => truth_rubber::thermal(&mut model, spec)?,
-        Effect::HystereticDamping => truth_hysteretic::hysteretic(&mut model, user, spec)?,
-        Effect::UnmodelledMode => truth_structure::unmodelled_mode(&mut model, spec)?,
-        Effect::CrankVariableInertia => truth_structure::crank_inertia(&mut model, spec)?,
-        Effect::GearBacklash => truth_structure::backlash(&mut model, spec)?,
-        Effect::CylinderImbalance => truth_structure::imbalance(&mut model, spec)?,
+        Effect::CouplingAmplitudeNonlinearity => rubber::amplitude(&mut model, spec)?,
+        Effect::CouplingFrequencyDependence => rubber::frequency(&mut model, user, spec)?,
+        Effect::CouplingThermalDrift => rubber::thermal(&mut model, spec)?,
+        Effect::HystereticDamping => hysteretic::hysteretic(&mut model, user, spec)?,
+        Effect::UnmodelledMode => structure::unmodelled_mode(&mut model, spec)?,
+        Effect::CrankVariableInertia => structure::crank_inertia(&mut model, spec)?,
+        Effect::GearBacklash => structure::backlash(&mut model, spec)?,
+        Effect::CylinderImbalance => structure::imbalance(&mut model, spec)?,
         Effect::SensorArtifact => {
             let (a, applied) = SensorArtifact::from_spec(spec, user)?;
             artifact = Some(a);
@@ -83,7 +83,7 @@ pub fn build_truth(
         }
     };
     validate(&model).map_err(|e| {
-        SynthError::Input(format!(
+        EffectError::Input(format!(
             "effect `{}` with these values makes an invalid model: {e}",
             spec.effect
         ))
@@ -111,7 +111,7 @@ fn parameter_error(
     user: &Model,
     spec: &EffectSpec,
     errors: &mut Vec<ParameterError>,
-) -> Result<Applied, SynthError> {
+) -> Result<Applied, EffectError> {
     let mut p = Params::new(spec, &["target", "factor"])?;
     let default = user
         .connections
@@ -151,10 +151,10 @@ fn user_value_of(user: &Model, target: &str) -> Option<f64> {
 }
 
 /// Undamped natural frequencies of `model` at full load, Hz (rigid-body modes left out).
-pub(crate) fn mode_frequencies_hz(model: &Model) -> Result<Vec<f64>, SynthError> {
+pub(crate) fn mode_frequencies_hz(model: &Model) -> Result<Vec<f64>, EffectError> {
     let system = System::new(model, OperatingPoint::default())
-        .map_err(|e| SynthError::Input(format!("the user's model: {e}")))?;
+        .map_err(|e| EffectError::Input(format!("the user's model: {e}")))?;
     let modes = crate::modal::modes(&system)
-        .map_err(|e| SynthError::Input(format!("the user's model: {e}")))?;
+        .map_err(|e| EffectError::Input(format!("the user's model: {e}")))?;
     Ok(modes.iter().map(|m| m.frequency_hz).collect())
 }

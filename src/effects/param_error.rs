@@ -8,7 +8,7 @@
 //! `connection.<name>.mesh_stiffness` (a gear's, N·m/rad). Damping, ψ and rigid gears are
 //! left alone.
 
-use super::SynthError;
+use super::EffectError;
 use super::rng::Rng;
 use crate::model::{ConnectionKind, Model, RubberStiffness};
 
@@ -73,9 +73,9 @@ pub fn apply_random_errors(
     model: &mut Model,
     pct: f64,
     seed: u64,
-) -> Result<Vec<ParameterError>, SynthError> {
+) -> Result<Vec<ParameterError>, EffectError> {
     if !(pct.is_finite() && (0.0..=50.0).contains(&pct)) {
-        return Err(SynthError::Input(format!(
+        return Err(EffectError::Input(format!(
             "--param-error-pct {pct}: must be within 0 … 50"
         )));
     }
@@ -105,7 +105,7 @@ pub fn scale_parameter(
     model: &mut Model,
     target: &str,
     factor: f64,
-) -> Result<ParameterError, SynthError> {
+) -> Result<ParameterError, EffectError> {
     let node = format!("inertia.{target}");
     let conn = format!("connection.{target}.");
     let known = parameter_names(model);
@@ -113,7 +113,7 @@ pub fn scale_parameter(
         .into_iter()
         .find(|(name, _)| *name == node || name.starts_with(&conn));
     let Some((parameter, value)) = found else {
-        return Err(SynthError::Input(format!(
+        return Err(EffectError::Input(format!(
             "effect `parameter_error`: `{target}` names no node and no connection with a \
              stiffness; parameters: {}",
             known.join(", ")

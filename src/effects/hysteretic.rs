@@ -1,7 +1,7 @@
 //! `hysteretic_damping`: the truth's coupling is a rubber stage (loss per cycle independent
 //! of frequency) where the user has seed 001's spring and viscous damper (eq. 1–2).
 
-use super::SynthError;
+use super::EffectError;
 use super::effect::{EffectSpec, Params};
 use super::truth::Applied;
 use crate::model::{ConnectionKind, Model, RubberStage, RubberStiffness};
@@ -23,7 +23,7 @@ pub(crate) fn hysteretic(
     model: &mut Model,
     user: &Model,
     spec: &EffectSpec,
-) -> Result<Applied, SynthError> {
+) -> Result<Applied, EffectError> {
     let mut p = Params::new(spec, &["connection", "reference_hz"])?;
     let softest = model
         .connections

@@ -1,9 +1,9 @@
 //! Effects on a rubber coupling stage (seed 000): amplitude nonlinearity (eq. 1),
 //! frequency dependence (eq. 9) and self-heating with temperature softening (eq. 10–11);
 //! each takes `connection=<name>`, by default the first rubber stage. Hysteretic damping in
-//! place of the user's viscous equivalent is in [`super::truth_hysteretic`].
+//! place of the user's viscous equivalent is in [`super::hysteretic`].
 
-use super::SynthError;
+use super::EffectError;
 use super::effect::{EffectSpec, Params};
 use super::truth::{Applied, mode_frequencies_hz};
 use crate::model::{
@@ -20,7 +20,7 @@ pub const SEED_TEMPERATURE_STIFFNESS_POLY: [f64; 3] = [0.000187, -0.02565, 1.530
 pub const SEED_TEMPERATURE_DAMPING_POLY: [f64; 3] = [0.000063, -0.01275, 1.281];
 
 /// Index of the rubber stage `connection` names (default: the first rubber stage).
-fn stage_index(model: &Model, p: &mut Params) -> Result<usize, SynthError> {
+fn stage_index(model: &Model, p: &mut Params) -> Result<usize, EffectError> {
     let first = model
         .connections
         .iter()
@@ -40,11 +40,11 @@ fn stage_index(model: &Model, p: &mut Params) -> Result<usize, SynthError> {
 }
 
 /// The rubber stage of connection `j` (found by [`stage_index`]).
-fn stage_mut(model: &mut Model, j: usize) -> Result<&mut RubberStage, SynthError> {
+fn stage_mut(model: &mut Model, j: usize) -> Result<&mut RubberStage, EffectError> {
     let name = model.connections[j].name.clone();
     match &mut model.connections[j].kind {
         ConnectionKind::Rubber(r) => Ok(r),
-        _ => Err(SynthError::Input(format!(
+        _ => Err(EffectError::Input(format!(
             "connection `{name}` is no rubber stage"
         ))),
     }
@@ -53,7 +53,7 @@ fn stage_mut(model: &mut Model, j: usize) -> Result<&mut RubberStage, SynthError
 /// `coupling_amplitude_nonlinearity`: α_x(x) = a2·x² + a1·x + 1 (default seed 000 eq. 1).
 /// A stage given by `stiffness` is first written as 8 elements, 4 per side, on pitch
 /// diameter `pitch_diameter_m` (default 0.2 m) with the same static stiffness.
-pub(crate) fn amplitude(model: &mut Model, spec: &EffectSpec) -> Result<Applied, SynthError> {
+pub(crate) fn amplitude(model: &mut Model, spec: &EffectSpec) -> Result<Applied, EffectError> {
     let mut p = Params::new(spec, &["connection", "a2", "a1", "pitch_diameter_m"])?;
     let j = stage_index(model, &mut p)?;
     let a2 = p.number("a2", SEED_AMPLITUDE_POLY[0], 0.0, 1.0)?;
@@ -100,7 +100,7 @@ pub(crate) fn frequency(
     model: &mut Model,
     user: &Model,
     spec: &EffectSpec,
-) -> Result<Applied, SynthError> {
+) -> Result<Applied, EffectError> {
     let mut p = Params::new(spec, &["connection", "scale", "reference_hz"])?;
     let j = stage_index(model, &mut p)?;
     let scale = p.number("scale", 0.1, 0.0, 1.0)?;
@@ -153,7 +153,7 @@ fn shifted_law(seed: [f64; 3], t0_c: f64) -> Poly {
 /// `ambient_c` (default its start temperature) through `conductance_w_per_k` (default
 /// 1.5 W/K; time constant 200 s). A stage without temperature laws gets seed 000 eq.
 /// 10–11 by [`shifted_law`]: −1.33 %/K in stiffness and −0.88 %/K in damping at the start.
-pub(crate) fn thermal(model: &mut Model, spec: &EffectSpec) -> Result<Applied, SynthError> {
+pub(crate) fn thermal(model: &mut Model, spec: &EffectSpec) -> Result<Applied, EffectError> {
     let mut p = Params::new(
         spec,
         &[

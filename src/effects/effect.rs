@@ -1,7 +1,7 @@
 //! The effects of `spec/diagnosis.md` by their exact identifiers, and the `key=value`
 //! parameters that size one.
 
-use super::SynthError;
+use super::EffectError;
 use std::collections::BTreeMap;
 
 /// One effect the truth model adds to the user's model (`spec/diagnosis.md`, table).
@@ -65,13 +65,13 @@ impl Effect {
     }
 
     /// Parses an identifier; the error lists the known ones.
-    pub fn parse(name: &str) -> Result<Self, SynthError> {
+    pub fn parse(name: &str) -> Result<Self, EffectError> {
         Self::ALL
             .into_iter()
             .find(|e| e.as_str() == name)
             .ok_or_else(|| {
                 let known: Vec<&str> = Self::ALL.iter().map(|e| e.as_str()).collect();
-                SynthError::Input(format!(
+                EffectError::Input(format!(
                     "unknown effect `{name}`; effects: {}",
                     known.join(", ")
                 ))
@@ -129,20 +129,20 @@ impl EffectSpec {
     }
 
     /// Parses `key=value` strings (the CLI's `--param`); a key given twice is an error.
-    pub fn parse(effect: &str, pairs: &[String]) -> Result<Self, SynthError> {
+    pub fn parse(effect: &str, pairs: &[String]) -> Result<Self, EffectError> {
         let mut spec = Self::new(Effect::parse(effect)?);
         for pair in pairs {
             let (k, v) = pair.split_once('=').ok_or_else(|| {
-                SynthError::Input(format!("--param `{pair}`: expected KEY=VALUE"))
+                EffectError::Input(format!("--param `{pair}`: expected KEY=VALUE"))
             })?;
             let (k, v) = (k.trim(), v.trim());
             if k.is_empty() || v.is_empty() {
-                return Err(SynthError::Input(format!(
+                return Err(EffectError::Input(format!(
                     "--param `{pair}`: expected KEY=VALUE"
                 )));
             }
             if spec.params.insert(k.to_string(), v.to_string()).is_some() {
-                return Err(SynthError::Input(format!("--param `{k}` given twice")));
+                return Err(EffectError::Input(format!("--param `{k}` given twice")));
             }
         }
         Ok(spec)
@@ -160,14 +160,14 @@ pub(crate) struct Params<'a> {
 
 impl<'a> Params<'a> {
     /// Checks that every given key is one of `known`.
-    pub fn new(spec: &'a EffectSpec, known: &[&str]) -> Result<Self, SynthError> {
+    pub fn new(spec: &'a EffectSpec, known: &[&str]) -> Result<Self, EffectError> {
         if let Some(k) = spec.params.keys().find(|k| !known.contains(&k.as_str())) {
             let list = if known.is_empty() {
                 "it takes none".to_string()
             } else {
                 format!("known: {}", known.join(", "))
             };
-            return Err(SynthError::Input(format!(
+            return Err(EffectError::Input(format!(
                 "effect `{}` has no parameter `{k}` ({list})",
                 spec.effect
             )));
@@ -180,15 +180,21 @@ impl<'a> Params<'a> {
     }
 
     /// An error about parameter `key`.
-    pub fn bad(&self, key: &str, message: impl std::fmt::Display) -> SynthError {
-        SynthError::Input(format!(
+    pub fn bad(&self, key: &str, message: impl std::fmt::Display) -> EffectError {
+        EffectError::Input(format!(
             "effect `{}`, parameter `{key}`: {message}",
             self.effect
         ))
     }
 
     /// A number within `[lo, hi]`, or `default`.
-    pub fn number(&mut self, key: &str, default: f64, lo: f64, hi: f64) -> Result<f64, SynthError> {
+    pub fn number(
+        &mut self,
+        key: &str,
+        default: f64,
+        lo: f64,
+        hi: f64,
+    ) -> Result<f64, EffectError> {
         let x = match self.given.get(key) {
             None => default,
             Some(text) => text
@@ -203,7 +209,7 @@ impl<'a> Params<'a> {
     }
 
     /// A name, or `default` (`None`: required unless the caller has one).
-    pub fn text(&mut self, key: &str, default: Option<String>) -> Result<String, SynthError> {
+    pub fn text(&mut self, key: &str, default: Option<String>) -> Result<String, EffectError> {
         let value = match (self.given.get(key), default) {
             (Some(v), _) => v.clone(),
             (None, Some(d)) => d,
