@@ -6,7 +6,7 @@ use torsim::diagnose::power_run::power;
 use torsim::diagnose::{DiagnoseOptions, LabelledRecording, diagnose};
 use torsim::model::{Model, parse_model, presets};
 use torsim::synth::{
-    EffectSpec, Effect, Measurement, Plan, PlanDurations, PlannedKind, PlannedRun, build_truth,
+    Effect, EffectSpec, Measurement, Plan, PlanDurations, PlannedKind, PlannedRun, build_truth,
     generate,
 };
 
@@ -56,7 +56,10 @@ fn detectable_sizes_scale_with_the_noise() {
             .expect("imbalance detectable")
     };
     for e in &quiet.effects {
-        assert!(e.lambda_typical.is_finite() && e.lambda_typical >= 0.0, "{e:?}");
+        assert!(
+            e.lambda_typical.is_finite() && e.lambda_typical >= 0.0,
+            "{e:?}"
+        );
     }
     let ratio = imbalance(&loud) / imbalance(&quiet);
     // Between 2 (noise only) and 1 (floor only); with the 0.5 % floor it is near 2.
@@ -81,8 +84,13 @@ fn diagnose_case(model: &Model, key: &str, value: f64, effect: Effect) -> String
             recording: r.recording,
         })
         .collect();
-    let report = diagnose(model, &labelled, &DiagnoseOptions::default(), &mut |_, _| true)
-        .expect("diagnosis");
+    let report = diagnose(
+        model,
+        &labelled,
+        &DiagnoseOptions::default(),
+        &mut |_, _| true,
+    )
+    .expect("diagnosis");
     report.verdict.effect
 }
 
@@ -98,12 +106,21 @@ fn full_diagnoses_agree_with_the_detectable_size() {
     let row = report
         .effects
         .iter()
-        .filter(|e| e.effect == "cylinder_imbalance" && e.place == "cylinder 1")
-        .next()
+        .find(|e| e.effect == "cylinder_imbalance" && e.place == "cylinder 1")
         .expect("cylinder 1");
     let s = row.detectable_size.expect("detectable");
-    let big = diagnose_case(&model, "pressure_scale", 1.0 - 2.0 * s, Effect::CylinderImbalance);
-    let small = diagnose_case(&model, "pressure_scale", 1.0 - 0.3 * s, Effect::CylinderImbalance);
+    let big = diagnose_case(
+        &model,
+        "pressure_scale",
+        1.0 - 2.0 * s,
+        Effect::CylinderImbalance,
+    );
+    let small = diagnose_case(
+        &model,
+        "pressure_scale",
+        1.0 - 0.3 * s,
+        Effect::CylinderImbalance,
+    );
     eprintln!("detectable {s}: 2× → {big}, 0.3× → {small}");
     assert_eq!(big, "cylinder_imbalance");
     assert!(small == "none" || small == "parameter_error", "{small}");

@@ -127,7 +127,10 @@ fn summary(r: &PowerReport, model_name: &str) -> String {
         "\ncannot be told apart (ρ = share of an effect's λ another's best fit leaves; < 0.25):"
     );
     if bad.is_empty() {
-        outln!(text, "  none: every two effects separate at twice their detectable size");
+        outln!(
+            text,
+            "  none: every two effects separate at twice their detectable size"
+        );
     }
     for p in bad {
         outln!(
@@ -140,7 +143,10 @@ fn summary(r: &PowerReport, model_name: &str) -> String {
         );
     }
     if !r.additions.is_empty() {
-        outln!(text, "\nwhat to add (measure: λ after the other's fit, or λ at typical size):");
+        outln!(
+            text,
+            "\nwhat to add (measure: λ after the other's fit, or λ at typical size):"
+        );
     }
     for a in &r.additions {
         outln!(

@@ -99,9 +99,10 @@ pub struct Analysed {
 impl Analysed {
     /// The signature at size `s`: the nearest evaluated one, scaled linearly.
     pub fn signature_at(&self, s: f64) -> Vec<f64> {
-        let near = self.signatures.iter().min_by(|a, b| {
-            (a.0 / s).ln().abs().total_cmp(&(b.0 / s).ln().abs())
-        });
+        let near = self
+            .signatures
+            .iter()
+            .min_by(|a, b| (a.0 / s).ln().abs().total_cmp(&(b.0 / s).ln().abs()));
         match near {
             Some((at, d)) => d.iter().map(|x| x * s / at).collect(),
             None => Vec::new(),
@@ -110,9 +111,7 @@ impl Analysed {
 
     /// Its reference size: detectable where it is, else the typical one.
     pub fn reference_size(&self) -> f64 {
-        self.row
-            .detectable_size
-            .unwrap_or(self.row.typical_size)
+        self.row.detectable_size.unwrap_or(self.row.typical_size)
     }
 }
 
@@ -142,7 +141,12 @@ fn detectable_size(points: &[(f64, f64)]) -> Option<f64> {
 
 /// The reference frequency at which hysteretic damping changes the observables least.
 fn hysteretic_null(ev: &Evaluator, c: &Candidate) -> Option<f64> {
-    let base: Vec<f64> = ev.observed.observations.iter().map(|o| o.measured_rpm).collect();
+    let base: Vec<f64> = ev
+        .observed
+        .observations
+        .iter()
+        .map(|o| o.measured_rpm)
+        .collect();
     let (lo, hi) = (c.param.lo.max(1.0), c.param.hi);
     let plain = ev.plain_columns();
     (0..HYSTERETIC_GRID)
@@ -184,13 +188,24 @@ pub fn analyse_candidate(ev: &Evaluator, c: &Candidate) -> Option<Analysed> {
     }
     let (_, typical) = signatures
         .iter()
-        .min_by(|a, b| (a.0 / size.typical).ln().abs().total_cmp(&(b.0 / size.typical).ln().abs()))?
+        .min_by(|a, b| {
+            (a.0 / size.typical)
+                .ln()
+                .abs()
+                .total_cmp(&(b.0 / size.typical).ln().abs())
+        })?
         .clone();
     let lambda_typical = projected_lambda(&typical, &ev.weights, &plain);
     let lambda_raw = projected_lambda(&typical, &ev.weights, &[]);
     let detectable = detectable_size(&points).filter(|s| *s <= size.max * (1.0 + 1e-9));
     let parameter = detectable.map_or_else(
-        || format!("not within {} ≤ {}", c.param.key, fmt_param(&size, size.max)),
+        || {
+            format!(
+                "not within {} ≤ {}",
+                c.param.key,
+                fmt_param(&size, size.max)
+            )
+        },
         |s| format!("{} = {}", c.param.key, fmt_param(&size, s)),
     );
     let row = EffectPower {

@@ -101,17 +101,45 @@ fn menu(model: &Model, plan: &Plan, bench: &Bench) -> Vec<Extra> {
         for f in [0.15, 0.4, 0.6, 0.85] {
             let v = (lo + (hi - lo) * f).round();
             if steady.iter().all(|s| (s - v).abs() > 0.05 * v) {
-                out.push(run(format!("Added {v} rpm"), PlannedKind::Steady { speed_rpm: v }, 4.0, 1.0));
+                out.push(run(
+                    format!("Added {v} rpm"),
+                    PlannedKind::Steady { speed_rpm: v },
+                    4.0,
+                    1.0,
+                ));
             }
         }
         let mid = (0.5 * (lo + hi)).round();
-        out.push(run(format!("Added {mid} rpm part load"), PlannedKind::Steady { speed_rpm: mid }, 4.0, 0.3));
-        if plan.runs.iter().all(|r| r.duration_s < super::observe::LONG_RUN_S || matches!(r.kind, PlannedKind::RunUp { .. })) {
-            out.push(run("Added long run".into(), PlannedKind::Steady { speed_rpm: mid }, 30.0, 1.0));
+        out.push(run(
+            format!("Added {mid} rpm part load"),
+            PlannedKind::Steady { speed_rpm: mid },
+            4.0,
+            0.3,
+        ));
+        if plan.runs.iter().all(|r| {
+            r.duration_s < super::observe::LONG_RUN_S || matches!(r.kind, PlannedKind::RunUp { .. })
+        }) {
+            out.push(run(
+                "Added long run".into(),
+                PlannedKind::Steady { speed_rpm: mid },
+                30.0,
+                1.0,
+            ));
         }
-        let slow = plan.runs.iter().any(|r| matches!(r.kind, PlannedKind::RunUp { .. }));
+        let slow = plan
+            .runs
+            .iter()
+            .any(|r| matches!(r.kind, PlannedKind::RunUp { .. }));
         let d = if slow { 120.0 } else { 60.0 };
-        out.push(run("Added run-up".into(), PlannedKind::RunUp { from_rpm: lo.max(1.0), to_rpm: hi }, d, 1.0));
+        out.push(run(
+            "Added run-up".into(),
+            PlannedKind::RunUp {
+                from_rpm: lo.max(1.0),
+                to_rpm: hi,
+            },
+            d,
+            1.0,
+        ));
     }
     for node in &model.inertias {
         if bench.stations.iter().all(|s| s.node != node.name) {

@@ -28,7 +28,9 @@ pub struct Column {
 pub fn projected_lambda(d: &[f64], weights: &[f64], columns: &[&Column]) -> f64 {
     let clean = |x: f64| if x.is_finite() { x } else { 0.0 };
     let n = d.len().min(weights.len());
-    let total: f64 = (0..n).map(|i| clean(weights[i]) * clean(d[i]).powi(2)).sum();
+    let total: f64 = (0..n)
+        .map(|i| clean(weights[i]) * clean(d[i]).powi(2))
+        .sum();
     let k = columns.len();
     if k == 0 {
         return total.max(0.0);
@@ -37,7 +39,8 @@ pub fn projected_lambda(d: &[f64], weights: &[f64], columns: &[&Column]) -> f64 
     let mut b = DVector::<f64>::zeros(k);
     for (a, ca) in columns.iter().enumerate() {
         for i in 0..n {
-            b[a] += clean(weights[i]) * clean(ca.values.get(i).copied().unwrap_or(0.0)) * clean(d[i]);
+            b[a] +=
+                clean(weights[i]) * clean(ca.values.get(i).copied().unwrap_or(0.0)) * clean(d[i]);
         }
         for (c, cc) in columns.iter().enumerate().skip(a) {
             let v: f64 = (0..n)

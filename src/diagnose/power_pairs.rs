@@ -70,7 +70,10 @@ pub fn representatives(all: &[Analysed]) -> Vec<&Analysed> {
             let key = |y: &Analysed| y.row.detectable_relative.unwrap_or(f64::INFINITY);
             key(x) < key(a) || (key(x) == key(a) && x.row.lambda_typical >= a.row.lambda_typical)
         };
-        match out.iter().position(|x| x.candidate.effect == a.candidate.effect) {
+        match out
+            .iter()
+            .position(|x| x.candidate.effect == a.candidate.effect)
+        {
             Some(k) if !better(out[k]) => out[k] = a,
             Some(_) => {}
             None => out.push(a),

@@ -141,7 +141,13 @@ pub fn planned(model: &Model, plan: &Plan, bench: &Bench) -> Option<Observed> {
             }
             PlannedKind::Steady { speed_rpm } => {
                 run.regime = Regime::Steady { speed_rpm };
-                push(0, speed_rpm, p.duration_s / 2.0, p.duration_s * rate_hz, 0.0);
+                push(
+                    0,
+                    speed_rpm,
+                    p.duration_s / 2.0,
+                    p.duration_s * rate_hz,
+                    0.0,
+                );
             }
             PlannedKind::RunUp { from_rpm, to_rpm } => {
                 run.regime = Regime::RunUp { from_rpm, to_rpm };
@@ -150,13 +156,7 @@ pub fn planned(model: &Model, plan: &Plan, bench: &Bench) -> Option<Observed> {
                 for (b, v) in bin_speeds.iter().enumerate() {
                     let m = window_bins.iter().filter(|x| **x == Some(b)).count();
                     if v.is_finite() && m >= 2 {
-                        push(
-                            b,
-                            *v,
-                            p.duration_s / 2.0,
-                            STFT_WINDOW_S * rate_hz,
-                            m as f64,
-                        );
+                        push(b, *v, p.duration_s / 2.0, STFT_WINDOW_S * rate_hz, m as f64);
                     }
                 }
                 run.window_times_s = times;
@@ -219,12 +219,20 @@ mod tests {
         assert!((first.sigma_rpm - 0.1 * (2.0_f64 / 8192.0).sqrt()).abs() < 1e-12);
         // Orders 0.5 … 8 of a four-stroke engine at every station.
         assert_eq!(orders(&model, 8.0).len(), 16);
-        assert!(o.runs.iter().any(|r| matches!(r.regime, Regime::LongRun { .. })));
+        assert!(
+            o.runs
+                .iter()
+                .any(|r| matches!(r.regime, Regime::LongRun { .. }))
+        );
         let run_up = o
             .runs
             .iter()
             .position(|r| matches!(r.regime, Regime::RunUp { .. }))
             .expect("a run-up");
-        assert!(o.observations.iter().any(|x| x.run == run_up && x.part > 10));
+        assert!(
+            o.observations
+                .iter()
+                .any(|x| x.run == run_up && x.part > 10)
+        );
     }
 }

@@ -56,7 +56,11 @@ pub fn power(
                 .into(),
                 observables: sigmas.len(),
                 sigma_rpm: [
-                    sigmas.iter().copied().fold(f64::INFINITY, f64::min).min(1e300),
+                    sigmas
+                        .iter()
+                        .copied()
+                        .fold(f64::INFINITY, f64::min)
+                        .min(1e300),
                     sigmas.iter().copied().fold(0.0, f64::max),
                 ],
             }

@@ -150,9 +150,15 @@ mod tests {
         assert!((s.typical - 0.05).abs() < 1e-12);
         assert!((s.value(0.1) - 0.9).abs() < 1e-12);
         assert!((s.max - 0.7).abs() < 1e-12);
-        let t = effect_size(&candidate(Effect::CouplingThermalDrift, 300.0, 10.0, 1e5), 0.0);
+        let t = effect_size(
+            &candidate(Effect::CouplingThermalDrift, 300.0, 10.0, 1e5),
+            0.0,
+        );
         assert!((t.value(t.typical) - 300.0).abs() < 1e-9);
-        let h = effect_size(&candidate(Effect::HystereticDamping, 50.0, 1.0, 2000.0), 25.0);
+        let h = effect_size(
+            &candidate(Effect::HystereticDamping, 50.0, 1.0, 2000.0),
+            25.0,
+        );
         assert!((h.value(h.typical) - 50.0).abs() < 1e-9);
         assert_eq!(h.null_value(), Some(25.0));
     }
