@@ -153,7 +153,10 @@ fn hysteretic_null(ev: &Evaluator, c: &Candidate) -> Option<f64> {
         .filter_map(|k| {
             let f = lo * (hi / lo).powf(k as f64 / (HYSTERETIC_GRID - 1) as f64);
             let (m, _) = c.apply(ev.model, f).ok()?;
-            let v = super::surrogate::linear_predict(&m, &ev.observed, None)?;
+            let v = super::power_eval::expected_all(
+                &ev.observed,
+                super::surrogate::linear_predict(&m, &ev.observed, None)?,
+            );
             let d: Vec<f64> = v.iter().zip(&base).map(|(a, b)| a - b).collect();
             Some((f, projected_lambda(&d, &ev.weights, &plain)))
         })

@@ -15,7 +15,7 @@ use super::context::PLAIN_BOUNDS;
 use super::observe::{Observed, Regime};
 use super::power_fisher::Column;
 use super::power_size::EffectSize;
-use super::residual::{FLOOR, FLOOR_RUN_UP};
+use super::residual::{FLOOR, FLOOR_RUN_UP, expected};
 use super::screen::linear_sees;
 use super::surrogate::{Plain, linear_predict, plain_parameters, ratios, scaled};
 use super::{forward, sensor, spread};
@@ -44,6 +44,17 @@ pub struct Evaluator<'a> {
     pub max_order: f64,
     /// Threads of the time domain.
     pub threads: usize,
+}
+
+/// The expected *measured* amplitudes of simulated ones `v`: an order amplitude is a
+/// magnitude, biased up by the noise ([`super::residual::expected`]), so an effect whose
+/// change stays under the noise moves it only to second order. Signatures are taken in
+/// this space, as the diagnosis compares.
+pub fn expected_all(observed: &Observed, v: Vec<f64>) -> Vec<f64> {
+    v.into_iter()
+        .zip(&observed.observations)
+        .map(|(a, o)| expected(a, o.bias_sigma_rpm))
+        .collect()
 }
 
 /// Does the analysis evaluate `effect` in the time domain?
@@ -82,7 +93,7 @@ impl<'a> Evaluator<'a> {
                 let mut factors = vec![1.0; names.len()];
                 factors[k] = f.clamp(PLAIN_BOUNDS.lo, PLAIN_BOUNDS.hi);
                 let m = scaled(model, &names, &factors).ok()?;
-                linear_predict(&m, &observed, None)
+                linear_predict(&m, &observed, None).map(|v| expected_all(&observed, v))
             };
             let (Some(up), Some(down)) = (at(PLAIN_STEP.exp()), at((-PLAIN_STEP).exp())) else {
                 continue;
@@ -136,7 +147,8 @@ impl<'a> Evaluator<'a> {
         wanted: Option<&[bool]>,
     ) -> Option<Vec<f64>> {
         let Some(wanted) = wanted else {
-            return linear_predict(model, &self.observed, joint);
+            return linear_predict(model, &self.observed, joint)
+                .map(|v| expected_all(&self.observed, v));
         };
         let mut v = forward::predict(
             model,
@@ -153,7 +165,7 @@ impl<'a> Evaluator<'a> {
             *x *= if f.is_finite() { f } else { 1.0 };
         }
         sensor::measure(&self.observed, &ratios(model), joint, &mut v);
-        Some(v)
+        Some(expected_all(&self.observed, v))
     }
 
     /// What candidate `c` is measured against: the effect at its null value where it
