@@ -23,9 +23,23 @@ use torsim::recording::{BadSamples, ReadOptions, read_recording_with};
 pub struct DiagnoseArgs {
     /// The user's model: file or preset:NAME.
     pub model: String,
-    /// Recordings (CSV; each sidecar, same stem `.toml`, beside it).
-    #[arg(required = true, value_name = "RECORDING")]
+    /// Recordings (CSV; each sidecar, same stem `.toml`, beside it); none with `--power`.
+    #[arg(required_unless_present = "power", value_name = "RECORDING")]
     pub recordings: Vec<String>,
+    /// Instead of a diagnosis: what a planned campaign can detect and tell apart, and at
+    /// what size (issue 14, item 6); no recordings.
+    #[arg(long, conflicts_with_all = ["recordings", "report"])]
+    pub power: bool,
+    /// With `--power`: the campaign plan (TOML, `[[run]]` tables, as `torsim synth
+    /// --plan`); default: `torsim synth`'s default campaign.
+    #[arg(long, value_name = "PLAN.toml", requires = "power")]
+    pub plan: Option<String>,
+    /// With `--power`: white noise of every sample, rpm (default 0.1, `torsim synth`'s).
+    #[arg(long, value_name = "X", requires = "power")]
+    pub noise_rpm: Option<f64>,
+    /// With `--power`: pulse-edge jitter, ns (default 20, `torsim synth`'s).
+    #[arg(long, value_name = "NS", requires = "power")]
+    pub jitter_ns: Option<f64>,
     /// Print the report as one JSON document.
     #[arg(long)]
     pub json: bool,
@@ -157,6 +171,10 @@ fn guard_report(a: &DiagnoseArgs) -> Result<(), CliError> {
 
 /// Runs the command.
 pub fn run(a: &DiagnoseArgs) -> Result<(), CliError> {
+    if a.power {
+        let options = options(a)?;
+        return super::diagnose_power::run(a, options.threads, options.max_order);
+    }
     let model = load_model(&a.model)?;
     guard_report(a)?;
     let options = options(a)?;

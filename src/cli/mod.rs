@@ -7,6 +7,7 @@ mod check;
 mod compare;
 mod coupling;
 mod diagnose;
+mod diagnose_power;
 pub mod error;
 mod format;
 mod input;
