@@ -33,6 +33,11 @@
 //!   rubber stage (seed 001 Tables 9–13).
 //! - [`diagnose`] — where a model and bench recordings disagree, the physics the model
 //!   left out (`spec/diagnosis.md`), fitted and validated on held-out recordings.
+//! - [`effects`] — the effects of `spec/diagnosis.md` as model extensions (rubber laws,
+//!   structure, backlash, hysteresis, sensor artefacts, plain parameter errors): the
+//!   diagnosis's candidates and the synthetic bench's truths.
+//! - [`campaign`] — a bench campaign as planned (runs and speed stations), for `synth` and
+//!   for the detectability analysis `diagnose --power`.
 //! - [`check`] — the `[expect]` checks that `torsim check` runs on presets.
 //! - [`synth`] — synthetic bench recordings for the diagnosis: the user's model made
 //!   richer by one effect of `spec/diagnosis.md` and plain parameter errors, simulated
@@ -57,6 +62,7 @@
 
 #![warn(missing_docs)]
 
+pub mod campaign;
 pub mod check;
 pub mod compare;
 pub mod diagnose;

@@ -7,7 +7,7 @@
 //! run-up is cut into one segment per thread ([`super::forward_runup`]).
 
 use super::forward_runup::{self, BinSums};
-use super::observe::{LONG_RUN_BLOCKS, Observed, RunShape, Run, analysis_options, slice};
+use super::observe::{LONG_RUN_BLOCKS, Observed, Run, RunShape, analysis_options, slice};
 use super::observe_runup::bin_means;
 use super::settling;
 use crate::model::{ConnectionKind, Model};

@@ -22,8 +22,8 @@ use super::context::{
     Context, Evaluated, PLAIN_BOUNDS, PLAIN_PRIOR, SURROGATE_ITERATIONS, SURROGATE_TOLERANCE,
 };
 use super::fit::{Bounds, FitResult, levenberg_marquardt, parallel_map};
-use super::surrogate::{linear_predict, scaled};
 use super::rounds::Stepped;
+use super::surrogate::{linear_predict, scaled};
 
 /// Design points besides the user's values. Each costs one surrogate fit (milliseconds
 /// to a few tenths of a second); seven keep the plain fit within a second on two cores

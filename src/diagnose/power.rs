@@ -17,9 +17,10 @@ use super::power_eval::{Evaluator, in_time_domain};
 use super::power_fisher::{LAMBDA_DETECT, projected_lambda};
 use super::power_plan::{Bench, planned};
 use super::power_size::{EffectSize, SizeLaw, effect_size};
-use super::{DiagnoseError, observe::Regime};
+use super::{DiagnoseError, observe::RunShape};
+use crate::campaign::Plan;
+use crate::effects::Effect;
 use crate::model::Model;
-use crate::synth::{Effect, Plan};
 use serde::Serialize;
 
 /// Sizes tried for a surrogate effect: its typical size times `2^k` for these `k`.
@@ -260,7 +261,7 @@ pub fn candidate_list(model: &Model, ev: &Evaluator) -> Vec<Candidate> {
         .observed
         .runs
         .iter()
-        .any(|r| matches!(r.regime, Regime::LongRun { .. }));
+        .any(|r| matches!(r.regime, RunShape::LongRun { .. }));
     candidates(model, &stations, long_run)
 }
 

@@ -12,8 +12,8 @@ use super::power::{Analysed, analyse_candidate};
 use super::power_eval::Evaluator;
 use super::power_pairs::{PairSeparation, share};
 use super::power_plan::{Bench, planned};
+use crate::campaign::{Plan, PlannedKind, PlannedRun, Station};
 use crate::model::Model;
-use crate::synth::{Plan, PlannedKind, PlannedRun, Station};
 use serde::Serialize;
 
 /// One recommendation.
@@ -88,7 +88,7 @@ fn menu(model: &Model, plan: &Plan, bench: &Bench) -> Vec<Extra> {
         });
     let run = |label: String, kind, duration_s, load| {
         Extra::Run(PlannedRun {
-            file: crate::synth::plan::stem(&label),
+            file: crate::campaign::plan::stem(&label),
             label,
             kind,
             duration_s,

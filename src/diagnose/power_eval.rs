@@ -12,15 +12,15 @@
 
 use super::candidates::Candidate;
 use super::context::PLAIN_BOUNDS;
-use super::observe::{Observed, Regime};
+use super::observe::{Observed, RunShape};
 use super::power_fisher::Column;
 use super::power_size::EffectSize;
 use super::residual::{FLOOR, FLOOR_RUN_UP, expected};
 use super::screen::linear_sees;
 use super::surrogate::{Plain, linear_predict, plain_parameters, ratios, scaled};
 use super::{forward, sensor, spread};
+use crate::effects::Effect;
 use crate::model::Model;
-use crate::synth::Effect;
 
 /// Relative step of a plain parameter's factor for its sensitivity (central
 /// differences in `ln f`; the linear model is smooth there, round-off is ~1e-12).
@@ -80,7 +80,7 @@ impl<'a> Evaluator<'a> {
             .iter()
             .map(|o| {
                 let floor = match observed.runs[o.run].regime {
-                    Regime::RunUp { .. } => FLOOR_RUN_UP,
+                    RunShape::Ramp { .. } => FLOOR_RUN_UP,
                     _ => FLOOR,
                 };
                 1.0 / (o.sigma_rpm.powi(2) + (floor * o.measured_rpm).powi(2))
@@ -130,9 +130,9 @@ impl<'a> Evaluator<'a> {
             .runs
             .iter()
             .map(|r| match (effect, &r.regime) {
-                (Effect::CouplingThermalDrift, Regime::LongRun { .. }) => true,
+                (Effect::CouplingThermalDrift, RunShape::LongRun { .. }) => true,
                 (Effect::CouplingThermalDrift, _) => false,
-                (_, Regime::RunUp { .. }) => false,
+                (_, RunShape::Ramp { .. }) => false,
                 _ => true,
             })
             .collect()

@@ -13,10 +13,10 @@
 //!   `σ_w = σ_n · √(2/N_w) · √1.5`, and `σ = σ_w / √(m/1.5)`, as
 //!   [`super::observe_runup::push_run_up`] takes it from a recording.
 
-use super::observe::{BIN_RPM, LONG_RUN_BLOCKS, LONG_RUN_S, Observation, Observed, Regime, Run};
+use super::observe::{BIN_RPM, LONG_RUN_BLOCKS, LONG_RUN_S, Observation, Observed, Run, RunShape};
 use super::observe_runup::bins;
+use crate::campaign::{Plan, PlannedKind, Station};
 use crate::model::{Model, graph};
-use crate::synth::{Plan, PlannedKind, Station};
 
 /// STFT window of the analysis, s, and its overlap ([`crate::signal::AnalysisOptions`]).
 const STFT_WINDOW_S: f64 = 0.1;
@@ -91,7 +91,7 @@ pub fn planned(model: &Model, plan: &Plan, bench: &Bench) -> Option<Observed> {
         let rate_hz = p.rate_hz.unwrap_or(bench.rate_hz);
         let mut run = Run {
             label: p.label.clone(),
-            regime: Regime::Steady { speed_rpm: 0.0 },
+            regime: RunShape::Steady { speed_rpm: 0.0 },
             load: p.load,
             duration_s: p.duration_s,
             rate_hz,
@@ -133,14 +133,14 @@ pub fn planned(model: &Model, plan: &Plan, bench: &Bench) -> Option<Observed> {
         };
         match p.kind {
             PlannedKind::Steady { speed_rpm } if p.duration_s >= LONG_RUN_S => {
-                run.regime = Regime::LongRun { speed_rpm };
+                run.regime = RunShape::LongRun { speed_rpm };
                 let block = p.duration_s / LONG_RUN_BLOCKS as f64;
                 for b in 0..LONG_RUN_BLOCKS {
                     push(b, speed_rpm, (b as f64 + 0.5) * block, block * rate_hz, 0.0);
                 }
             }
             PlannedKind::Steady { speed_rpm } => {
-                run.regime = Regime::Steady { speed_rpm };
+                run.regime = RunShape::Steady { speed_rpm };
                 push(
                     0,
                     speed_rpm,
@@ -150,7 +150,7 @@ pub fn planned(model: &Model, plan: &Plan, bench: &Bench) -> Option<Observed> {
                 );
             }
             PlannedKind::RunUp { from_rpm, to_rpm } => {
-                run.regime = Regime::RunUp { from_rpm, to_rpm };
+                run.regime = RunShape::Ramp { from_rpm, to_rpm };
                 let (times, speeds) = windows(from_rpm, to_rpm, p.duration_s, rate_hz);
                 let (window_bins, bin_speeds) = bins(&speeds);
                 for (b, v) in bin_speeds.iter().enumerate() {
@@ -197,8 +197,8 @@ pub fn bin_count(from_rpm: f64, to_rpm: f64) -> usize {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::campaign::PlanDurations;
     use crate::model::{parse_model, presets};
-    use crate::synth::PlanDurations;
 
     fn bench_model() -> Model {
         let p = presets::preset("diagnosis-bench").expect("shipped");
@@ -215,19 +215,19 @@ mod tests {
         let plan = Plan::default_for(&model, PlanDurations::default()).expect("plan");
         let o = planned(&model, &plan, &bench).expect("observables");
         let first = &o.observations[0];
-        assert!(matches!(o.runs[0].regime, Regime::Steady { .. }));
+        assert!(matches!(o.runs[0].regime, RunShape::Steady { .. }));
         assert!((first.sigma_rpm - 0.1 * (2.0_f64 / 8192.0).sqrt()).abs() < 1e-12);
         // Orders 0.5 … 8 of a four-stroke engine at every station.
         assert_eq!(orders(&model, 8.0).len(), 16);
         assert!(
             o.runs
                 .iter()
-                .any(|r| matches!(r.regime, Regime::LongRun { .. }))
+                .any(|r| matches!(r.regime, RunShape::LongRun { .. }))
         );
         let run_up = o
             .runs
             .iter()
-            .position(|r| matches!(r.regime, Regime::RunUp { .. }))
+            .position(|r| matches!(r.regime, RunShape::Ramp { .. }))
             .expect("a run-up");
         assert!(
             o.observations

@@ -1,14 +1,14 @@
 //! The detectability analysis from end to end (issue 14, item 6; see [`super::power`]).
 
 use super::DiagnoseError;
-use super::observe::Regime;
+use super::observe::RunShape;
 use super::power::{PowerReport, analyse_all};
 use super::power_add::{RunSummary, recommend};
 use super::power_fisher::LAMBDA_DETECT;
 use super::power_pairs::{pairs, representatives};
 use super::power_plan::Bench;
+use crate::campaign::Plan;
 use crate::model::Model;
-use crate::synth::Plan;
 
 /// Analyses what `plan`, measured by `bench`, can detect and tell apart on `model`;
 /// `progress(fraction, stage)` returns `false` to cancel.
@@ -49,9 +49,9 @@ pub fn power(
             RunSummary {
                 label: run.label.clone(),
                 kind: match run.regime {
-                    Regime::Steady { .. } => "steady",
-                    Regime::LongRun { .. } => "long run",
-                    Regime::RunUp { .. } => "run-up",
+                    RunShape::Steady { .. } => "steady",
+                    RunShape::LongRun { .. } => "long run",
+                    RunShape::Ramp { .. } => "run-up",
                 }
                 .into(),
                 observables: sigmas.len(),

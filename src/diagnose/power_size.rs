@@ -20,7 +20,7 @@
 //! viscous damper already stands in for it.
 
 use super::candidates::Candidate;
-use crate::synth::Effect;
+use crate::effects::Effect;
 
 /// How a size maps to the candidate's parameter.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -12,9 +12,9 @@ use super::drift::{DRIFT_CHI2, long_run_drift};
 use super::observe::RunShape;
 use super::surrogate::{causal_system, run_speeds};
 use super::trial;
+use crate::effects::Effect;
 use crate::physics::Excitation;
 use crate::response::forced_response_orders;
-use crate::effects::Effect;
 
 /// A screened candidate must lower the plain fit's score on the fitted data by this
 /// fraction to be verified in the time domain. Zero: any gain will do. The linear

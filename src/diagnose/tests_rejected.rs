@@ -3,9 +3,9 @@
 //! to fail as the bench failed ([`super::trial::inject_failure`]).
 
 use super::{DiagnoseError, DiagnoseOptions, LabelledRecording, diagnose, trial};
+use crate::effects::Effect;
 use crate::model::parse_model;
 use crate::recording::read_recording;
-use crate::effects::Effect;
 use std::path::{Path, PathBuf};
 
 fn case(name: &str) -> (crate::model::Model, Vec<LabelledRecording>) {

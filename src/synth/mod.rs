@@ -40,13 +40,13 @@ pub mod fir;
 pub mod generate;
 pub mod ias;
 pub mod measurement;
-pub mod plan;
-pub mod plan_file;
 pub mod shaft_angle;
-pub mod station;
 pub mod truth_file;
 pub mod wobble;
 
+pub use crate::campaign::{
+    Plan, PlanDurations, PlannedKind, PlannedRun, Station, plan, plan_file, station,
+};
 pub use crate::effects::rng;
 pub use crate::effects::{
     AppliedEffect, Effect, EffectSpec, ParamValue, ParameterError, SensorArtifact, Truth,
@@ -54,8 +54,6 @@ pub use crate::effects::{
 };
 pub use generate::{SynthRecording, generate};
 pub use measurement::{Measurement, time_stamps};
-pub use plan::{Plan, PlanDurations, PlannedKind, PlannedRun};
-pub use station::Station;
 pub use truth_file::{TRUTH_FILE, TRUTH_MODEL_FILE, truth_toml};
 
 use crate::effects::EffectError;
@@ -83,6 +81,15 @@ pub enum SynthError {
         /// Why.
         message: String,
     },
+}
+
+/// A plan's or a station's bad input is the synthesis's bad input, with the same message.
+impl From<crate::campaign::CampaignError> for SynthError {
+    fn from(e: crate::campaign::CampaignError) -> Self {
+        match e {
+            crate::campaign::CampaignError::Input(message) => SynthError::Input(message),
+        }
+    }
 }
 
 /// An effect's bad input is the synthesis's bad input, with the same message.

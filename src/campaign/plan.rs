@@ -2,7 +2,7 @@
 //! duration and (optionally) its own sample rate. [`Plan::default_for`] makes the usual
 //! campaign from a model; [`Plan::parse`] ([`super::plan_file`]) reads a plan file.
 
-use super::SynthError;
+use super::CampaignError;
 use crate::model::{Model, Pressure};
 
 /// The speed of one planned recording.
@@ -88,7 +88,7 @@ impl Plan {
     /// long full-load run at the middle regime; one full-load run-up over `speed_range_rpm`.
     /// A model without regimes gets six speeds A–F spread over its operating (or speed)
     /// range.
-    pub fn default_for(model: &Model, d: PlanDurations) -> Result<Self, SynthError> {
+    pub fn default_for(model: &Model, d: PlanDurations) -> Result<Self, CampaignError> {
         let op = &model.operation;
         let mut regimes: Vec<(String, f64, f64)> = op
             .regimes
@@ -100,7 +100,7 @@ impl Plan {
                 .operating_range_rpm
                 .or(op.speed_range_rpm)
                 .ok_or_else(|| {
-                    SynthError::Input(
+                    CampaignError::Input(
                         "the model has no [operation] regimes, operating_range_rpm or \
                          speed_range_rpm: give a plan (--plan)"
                             .into(),

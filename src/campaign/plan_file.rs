@@ -19,13 +19,13 @@
 //! duration_s = 60
 //! ```
 
-use super::SynthError;
+use super::CampaignError;
 use super::plan::{Plan, PlannedKind, PlannedRun};
 use toml_edit::{Document, Item, Table};
 
 impl Plan {
     /// Reads a plan file's text; errors name `file`, the line and the key.
-    pub fn parse(text: &str, file: &str) -> Result<Self, SynthError> {
+    pub fn parse(text: &str, file: &str) -> Result<Self, CampaignError> {
         let line_of = |span: Option<std::ops::Range<usize>>| {
             span.map_or(String::new(), |s| {
                 format!(
@@ -35,7 +35,7 @@ impl Plan {
             })
         };
         let doc = Document::parse(text).map_err(|e| {
-            SynthError::Input(format!(
+            CampaignError::Input(format!(
                 "{file}{}: {}",
                 line_of(e.span()),
                 e.message().trim()
@@ -44,13 +44,13 @@ impl Plan {
         let root = doc.as_table();
         if let Some((k, _)) = root.iter().find(|(k, _)| *k != "run") {
             let span = root.key(k).and_then(|k| k.span());
-            return Err(SynthError::Input(format!(
+            return Err(CampaignError::Input(format!(
                 "{file}{}: unknown key `{k}` (a plan has [[run]] tables)",
                 line_of(span)
             )));
         }
         let Some(runs) = root.get("run").and_then(Item::as_array_of_tables) else {
-            return Err(SynthError::Input(format!("{file}: no [[run]] tables")));
+            return Err(CampaignError::Input(format!("{file}: no [[run]] tables")));
         };
         let mut out = Vec::new();
         for (i, t) in runs.iter().enumerate() {
@@ -59,7 +59,7 @@ impl Plan {
         let mut seen = std::collections::HashSet::new();
         for r in &out {
             if !seen.insert(r.file.clone()) {
-                return Err(SynthError::Input(format!(
+                return Err(CampaignError::Input(format!(
                     "{file}: two runs write `{}`",
                     r.file
                 )));
@@ -88,19 +88,19 @@ fn run(
     i: usize,
     file: &str,
     line_of: &dyn Fn(Option<std::ops::Range<usize>>) -> String,
-) -> Result<PlannedRun, SynthError> {
+) -> Result<PlannedRun, CampaignError> {
     let at = |key: &str| {
         let span = t.key(key).and_then(|k| k.span()).or_else(|| t.span());
         format!("{file}{}: run[{i}].{key}", line_of(span))
     };
     if let Some((k, _)) = t.iter().find(|(k, _)| !RUN_KEYS.contains(k)) {
-        return Err(SynthError::Input(format!(
+        return Err(CampaignError::Input(format!(
             "{}: unknown key (known: {})",
             at(k),
             RUN_KEYS.join(", ")
         )));
     }
-    let number = |key: &str| -> Result<Option<f64>, SynthError> {
+    let number = |key: &str| -> Result<Option<f64>, CampaignError> {
         match t.get(key) {
             None => Ok(None),
             Some(item) => item
@@ -108,28 +108,29 @@ fn run(
                 .or_else(|| item.as_integer().map(|v| v as f64))
                 .filter(|v| v.is_finite() && *v > 0.0)
                 .map(Some)
-                .ok_or_else(|| SynthError::Input(format!("{}: expected a number > 0", at(key)))),
+                .ok_or_else(|| CampaignError::Input(format!("{}: expected a number > 0", at(key)))),
         }
     };
-    let string = |key: &str| -> Result<Option<String>, SynthError> {
+    let string = |key: &str| -> Result<Option<String>, CampaignError> {
         match t.get(key) {
             None => Ok(None),
             Some(item) => item
                 .as_str()
                 .map(|s| Some(s.to_string()))
-                .ok_or_else(|| SynthError::Input(format!("{}: expected a string", at(key)))),
+                .ok_or_else(|| CampaignError::Input(format!("{}: expected a string", at(key)))),
         }
     };
-    let required =
-        |key: &str| number(key)?.ok_or_else(|| SynthError::Input(format!("{}: missing", at(key))));
+    let required = |key: &str| {
+        number(key)?.ok_or_else(|| CampaignError::Input(format!("{}: missing", at(key))))
+    };
     let file_stem =
-        string("file")?.ok_or_else(|| SynthError::Input(format!("{}: missing", at("file"))))?;
+        string("file")?.ok_or_else(|| CampaignError::Input(format!("{}: missing", at("file"))))?;
     if file_stem.is_empty()
         || !file_stem
             .chars()
             .all(|c| c.is_ascii_alphanumeric() || c == '-' || c == '_')
     {
-        return Err(SynthError::Input(format!(
+        return Err(CampaignError::Input(format!(
             "{}: `{file_stem}` must be letters, digits, - and _",
             at("file")
         )));
@@ -143,7 +144,7 @@ fn run(
             to_rpm: required("to_rpm")?,
         },
         other => {
-            return Err(SynthError::Input(format!(
+            return Err(CampaignError::Input(format!(
                 "{}: {} (expected \"steady\" or \"run-up\")",
                 at("kind"),
                 other.map_or("missing".to_string(), |k| format!("`{k}`"))
@@ -156,7 +157,7 @@ fn run(
             .as_float()
             .or_else(|| item.as_integer().map(|v| v as f64))
             .filter(|v| (0.0..=1.0).contains(v))
-            .ok_or_else(|| SynthError::Input(format!("{}: expected 0 … 1", at("load"))))?,
+            .ok_or_else(|| CampaignError::Input(format!("{}: expected 0 … 1", at("load"))))?,
     };
     Ok(PlannedRun {
         label: string("label")?.unwrap_or_else(|| file_stem.clone()),

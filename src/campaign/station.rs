@@ -2,7 +2,7 @@
 //! at each measured node (seed 001: optical probes on zebra tapes of 78 and 94 lines). The
 //! artifacts such a sensor can have are effects, [`crate::effects::sensor`].
 
-use super::SynthError;
+use super::CampaignError;
 use crate::effects::sensor::coupling_side;
 use crate::model::{Model, graph};
 
@@ -20,7 +20,7 @@ pub struct Station {
 impl Station {
     /// Parses `NODE[:KIND[:LINES]]` (the CLI's `--station`); kind `zebra` (default 78
     /// lines, seed 001's engine-side tape) or `encoder` (default 360 lines).
-    pub fn parse(text: &str) -> Result<Self, SynthError> {
+    pub fn parse(text: &str) -> Result<Self, CampaignError> {
         let mut parts = text.split(':').map(str::trim);
         let node = parts.next().unwrap_or_default().to_string();
         let kind = parts.next().unwrap_or("zebra").to_string();
@@ -28,7 +28,7 @@ impl Station {
             "zebra" => 78,
             "encoder" => 360,
             other => {
-                return Err(SynthError::Input(format!(
+                return Err(CampaignError::Input(format!(
                     "--station `{text}`: sensor kind `{other}` (expected zebra or encoder)"
                 )));
             }
@@ -36,11 +36,11 @@ impl Station {
         let lines = match parts.next() {
             None => default_lines,
             Some(n) => n.parse::<u32>().ok().filter(|n| *n >= 4).ok_or_else(|| {
-                SynthError::Input(format!("--station `{text}`: lines `{n}` must be ≥ 4"))
+                CampaignError::Input(format!("--station `{text}`: lines `{n}` must be ≥ 4"))
             })?,
         };
         if node.is_empty() || parts.next().is_some() {
-            return Err(SynthError::Input(format!(
+            return Err(CampaignError::Input(format!(
                 "--station `{text}`: expected NODE[:zebra|encoder[:LINES]]"
             )));
         }
