@@ -167,22 +167,25 @@ fn diagnose_json(dir: &Path) -> serde_json::Value {
 }
 
 /// `torsim diagnose` on the DAQ files names what it names on the pristine ones, with the
-/// same held-out fit. Tolerance 1e-6 relative: the inputs agree to 1e-9 (above), and the
-/// fits amplify that by at most the conditioning of a few Levenberg–Marquardt steps.
+/// same held-out fit. Tolerance 1e-3 relative: the inputs agree to 1e-9 (above), and χ²/N
+/// amplifies a relative change ε of a simulated amplitude s by about 2·z·ε·s/σ, with
+/// z ≈ 8 and s/σ up to ~1e4 on this case (amplitudes of tens of rpm, σ of a few mrpm):
+/// 1e-9 becomes ~2e-4 (measured: 4e-5 on `fit.before`). `fit.after` comes out of
+/// iterative fits that stop on a relative cost change, so it may differ by one more step:
+/// 1e-2 (measured: 1.5e-3).
 #[test]
-#[ignore = "fails: the pristine case through the binary (--threads 2) was named sensor_artifact in one run, and the noise estimate depends on the clock offset (see above); to be rechecked after the fix"]
 fn daq_files_are_diagnosed_like_the_pristine_ones() {
     let daq = daq_case();
     let pristine = diagnose_json(&case_dir());
     let shifted = diagnose_json(&daq);
     assert_eq!(pristine["verdict"]["effect"], CASE);
     assert_eq!(shifted["verdict"]["effect"], pristine["verdict"]["effect"]);
-    for key in ["before", "after"] {
+    for (key, tolerance) in [("before", 1e-3), ("after", 1e-2)] {
         let (a, b) = (
             pristine["fit"][key].as_f64().expect("a number"),
             shifted["fit"][key].as_f64().expect("a number"),
         );
-        assert!((a - b).abs() <= 1e-6 * a.abs(), "fit.{key}: {a} vs {b}");
+        assert!((a - b).abs() <= tolerance * a.abs(), "fit.{key}: {a} vs {b}");
     }
     let (before, after) = (
         shifted["fit"]["before"].as_f64().expect("before"),

@@ -48,7 +48,7 @@ pub struct Run {
     pub stations: Vec<String>,
     /// Run-ups: the measured STFT window speeds, rpm (the bins follow them).
     pub window_speeds_rpm: Vec<f64>,
-    /// Run-ups: the measured STFT window centres, s.
+    /// Run-ups: the measured STFT window centres, s from the first sample.
     pub window_times_s: Vec<f64>,
     /// Lines per revolution of each station's tape or encoder (sidecar `sensors`), if
     /// known.
@@ -230,10 +230,13 @@ pub fn observe(
             RunShape::Ramp { .. } => {
                 let t0 = rec.time_s.first().copied().unwrap_or(0.0);
                 let (from, to, speeds) = ramp_of(&analysis, t0, duration).map_err(fail)?;
+                // Relative to the first sample, as the simulated run-up's windows are: a
+                // bench clock that starts at 131.4 s must not move every window out of
+                // the simulation's bins (issue 14: `none` controls simulated as 0 rpm).
                 run.window_times_s = analysis
                     .stft
                     .as_ref()
-                    .map_or(Vec::new(), |s| s.times_s.clone());
+                    .map_or(Vec::new(), |s| s.times_s.iter().map(|t| t - t0).collect());
                 run.regime = RunShape::Ramp {
                     from_rpm: from,
                     to_rpm: to,
