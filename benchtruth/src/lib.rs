@@ -14,3 +14,10 @@ pub mod integrate;
 pub mod plant;
 pub mod rng;
 pub mod visco;
+pub mod campaign;
+pub mod draw;
+pub mod sim;
+pub mod sizing;
+pub mod write;
+
+pub use write::{write_case, CaseFiles, WriteError};
