@@ -14,10 +14,12 @@ pub mod integrate;
 pub mod plant;
 pub mod rng;
 pub mod visco;
+pub mod bench;
 pub mod campaign;
 pub mod draw;
 pub mod sim;
 pub mod sizing;
 pub mod write;
 
+pub use bench::{score, Outcome};
 pub use write::{write_case, CaseFiles, WriteError};

@@ -75,6 +75,7 @@ pub struct Plant {
     ki: f64,
     t_mean: f64,
     j_ref: f64,
+    drag_ref: f64,
     pub profile: Profile,
     /// Length of the state vector; the controller integral is the last entry.
     pub len: usize,
@@ -173,6 +174,7 @@ impl Plant {
             ki: j_load * wn * wn,
             t_mean,
             j_ref,
+            drag_ref: (0..n).map(|i| d.nodes[i].damping_nm_s * speed_ratio[i].powi(2)).sum(),
             profile,
             len: off + 1,
             fastest_rate: fastest,
@@ -308,7 +310,9 @@ impl System for Plant {
         }
         let (w_ref, dw_ref) = self.profile.at(t);
         let e = y[n + self.load_node] - self.load_ratio * w_ref;
-        let ff = (self.t_mean - self.j_ref * dw_ref) / self.load_ratio;
+        // Feed-forward: the engine's mean torque less what accelerates the line and what
+        // the nodes' drag takes, referred to the load shaft (power balance).
+        let ff = (self.t_mean - self.j_ref * dw_ref - self.drag_ref * w_ref) / self.load_ratio;
         torque[self.load_node] -= ff + self.kp * e + self.ki * y[self.len - 1];
         dy[self.len - 1] = e;
         let en = self.engine_node;
