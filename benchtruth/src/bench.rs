@@ -4,7 +4,7 @@
 //! worse than the user's model, and the time per case.
 
 use crate::effects::CLASSES;
-use crate::write::{write_case, CaseFiles};
+use crate::write::{CaseFiles, write_case};
 use serde_json::Value;
 use std::fmt::Write as _;
 use std::path::Path;
@@ -26,9 +26,16 @@ pub struct Outcome {
 
 /// Scores a `torsim diagnose --json` report against the truth of `case`.
 pub fn score(case: &CaseFiles, report: &Value) -> Outcome {
-    let verdict = report["verdict"]["effect"].as_str().unwrap_or("?").to_string();
+    let verdict = report["verdict"]["effect"]
+        .as_str()
+        .unwrap_or("?")
+        .to_string();
     let control = case.class == "none" || case.class == "parameter_error";
-    let right = if control { verdict == "none" || verdict == "parameter_error" } else { verdict == case.class };
+    let right = if control {
+        verdict == "none" || verdict == "parameter_error"
+    } else {
+        verdict == case.class
+    };
     let place_right = match (&case.place, right) {
         (Some((key, ok)), true) => {
             let p = &report["verdict"]["parameters"];
@@ -37,7 +44,13 @@ pub fn score(case: &CaseFiles, report: &Value) -> Outcome {
                 Value::Number(n) => n.as_f64().map(|x| format!("{x}")),
                 _ => p["node"].as_str().map(str::to_string),
             };
-            Some(got.is_some_and(|g| ok.iter().any(|o| o == &g || o.parse::<f64>().ok() == g.parse::<f64>().ok() && o.parse::<f64>().is_ok())))
+            Some(got.is_some_and(|g| {
+                ok.iter().any(|o| {
+                    o == &g
+                        || o.parse::<f64>().ok() == g.parse::<f64>().ok()
+                            && o.parse::<f64>().is_ok()
+                })
+            }))
         }
         _ => None,
     };
@@ -64,28 +77,50 @@ pub struct Row {
 pub fn run_case(torsim: &Path, seed: u64, dir: &Path) -> Row {
     let files = match write_case(seed, None, dir) {
         Ok(f) => f,
-        Err(e) => return Row { seed, form: "?".into(), outcome: Err(format!("draw: {e}")), seconds: 0.0 },
+        Err(e) => {
+            return Row {
+                seed,
+                form: "?".into(),
+                outcome: Err(format!("draw: {e}")),
+                seconds: 0.0,
+            };
+        }
     };
     let start = Instant::now();
-    let out = Command::new(torsim).arg("diagnose").arg(&files.model).args(&files.recordings).arg("--json").output();
+    let out = Command::new(torsim)
+        .arg("diagnose")
+        .arg(&files.model)
+        .args(&files.recordings)
+        .arg("--json")
+        .output();
     let seconds = start.elapsed().as_secs_f64();
     let outcome = match out {
         Err(e) => Err(format!("cannot run {}: {e}", torsim.display())),
-        Ok(o) if !o.status.success() => {
-            Err(String::from_utf8_lossy(&o.stderr).lines().last().unwrap_or("failed").to_string())
-        }
+        Ok(o) if !o.status.success() => Err(String::from_utf8_lossy(&o.stderr)
+            .lines()
+            .last()
+            .unwrap_or("failed")
+            .to_string()),
         Ok(o) => serde_json::from_slice::<Value>(&o.stdout)
             .map_err(|e| format!("report is not JSON: {e}"))
             .map(|v| score(&files, &v)),
     };
-    Row { seed, form: files.form, outcome, seconds }
+    Row {
+        seed,
+        form: files.form,
+        outcome,
+        seconds,
+    }
 }
 
 /// The README-ready markdown summary of `rows`.
 pub fn summary(rows: &[Row], first: u64, last: u64) -> String {
     let mut verdicts: Vec<String> = CLASSES.iter().map(|s| s.to_string()).collect();
     verdicts.push("error".into());
-    let mut s = format!("Seeds {first}–{last}, {} cases.\n\n| truth \\ verdict |", rows.len());
+    let mut s = format!(
+        "Seeds {first}–{last}, {} cases.\n\n| truth \\ verdict |",
+        rows.len()
+    );
     for v in &verdicts {
         let _ = write!(s, " {} |", abbreviate(v));
     }
@@ -103,12 +138,33 @@ pub fn summary(rows: &[Row], first: u64, last: u64) -> String {
         let _ = write!(s, "| {class} |");
         for v in &verdicts {
             let n = mine.iter().filter(|r| verdict_of(r) == *v).count();
-            let _ = write!(s, " {} |", if n == 0 { String::new() } else { n.to_string() });
+            let _ = write!(
+                s,
+                " {} |",
+                if n == 0 { String::new() } else { n.to_string() }
+            );
         }
-        let right = mine.iter().filter(|r| r.outcome.as_ref().is_ok_and(|o| o.right)).count();
+        let right = mine
+            .iter()
+            .filter(|r| r.outcome.as_ref().is_ok_and(|o| o.right))
+            .count();
         right_all += right;
-        let pr = mine.iter().filter(|r| r.outcome.as_ref().is_ok_and(|o| o.place_right == Some(true))).count();
-        let pw = mine.iter().filter(|r| r.outcome.as_ref().is_ok_and(|o| o.place_right == Some(false))).count();
+        let pr = mine
+            .iter()
+            .filter(|r| {
+                r.outcome
+                    .as_ref()
+                    .is_ok_and(|o| o.place_right == Some(true))
+            })
+            .count();
+        let pw = mine
+            .iter()
+            .filter(|r| {
+                r.outcome
+                    .as_ref()
+                    .is_ok_and(|o| o.place_right == Some(false))
+            })
+            .count();
         let _ = writeln!(s, " {right}/{} | {pr}/{pw} |", mine.len());
         for r in &mine {
             match &r.outcome {
@@ -116,10 +172,10 @@ pub fn summary(rows: &[Row], first: u64, last: u64) -> String {
                     if (class == "none" || class == "parameter_error") && !o.right {
                         false_physics += 1;
                     }
-                    if let (Some(b), Some(a)) = (o.fit_before, o.fit_after) {
-                        if a > b {
-                            worse += 1;
-                        }
+                    if let (Some(b), Some(a)) = (o.fit_before, o.fit_after)
+                        && a > b
+                    {
+                        worse += 1;
                     }
                 }
                 Err(_) => errors += 1,
@@ -140,7 +196,9 @@ pub fn summary(rows: &[Row], first: u64, last: u64) -> String {
 }
 
 fn abbreviate(v: &str) -> String {
-    v.split('_').map(|w| w.chars().next().unwrap_or('?')).collect::<String>()
+    v.split('_')
+        .map(|w| w.chars().next().unwrap_or('?'))
+        .collect::<String>()
 }
 
 fn class_of_row(r: &Row) -> String {
@@ -159,16 +217,40 @@ fn verdict_of(r: &Row) -> String {
 
 /// `results.csv`: one row per case.
 pub fn results_csv(rows: &[Row]) -> String {
-    let mut s = String::from("seed,truth,form,verdict,right,place,fit_before,fit_after,seconds,error\n");
+    let mut s =
+        String::from("seed,truth,form,verdict,right,place,fit_before,fit_after,seconds,error\n");
     for r in rows {
         let num = |x: Option<f64>| x.map_or(String::new(), |v| format!("{v}"));
         match &r.outcome {
             Ok(o) => {
-                let place = match o.place_right { Some(true) => "right", Some(false) => "wrong", None => "" };
-                let _ = writeln!(s, "{},{},{},{},{},{place},{},{},{:.2},", r.seed, o.truth, r.form, o.verdict, o.right, num(o.fit_before), num(o.fit_after), r.seconds);
+                let place = match o.place_right {
+                    Some(true) => "right",
+                    Some(false) => "wrong",
+                    None => "",
+                };
+                let _ = writeln!(
+                    s,
+                    "{},{},{},{},{},{place},{},{},{:.2},",
+                    r.seed,
+                    o.truth,
+                    r.form,
+                    o.verdict,
+                    o.right,
+                    num(o.fit_before),
+                    num(o.fit_after),
+                    r.seconds
+                );
             }
             Err(e) => {
-                let _ = writeln!(s, "{},{},{},error,false,,,,{:.2},\"{}\"", r.seed, class_of_row(r), r.form, r.seconds, e.replace('"', "'"));
+                let _ = writeln!(
+                    s,
+                    "{},{},{},error,false,,,,{:.2},\"{}\"",
+                    r.seed,
+                    class_of_row(r),
+                    r.form,
+                    r.seconds,
+                    e.replace('"', "'")
+                );
             }
         }
     }

@@ -52,14 +52,29 @@ pub struct Needs {
 
 /// Draws a campaign.
 pub fn draw(rng: &mut Rng, needs: &Needs) -> Campaign {
-    let rate_hz = rng.pick(&[1000.0, 1024.0, 2000.0, 2048.0, 2560.0, 4096.0, 5000.0, 10000.0]);
-    let mut stations = vec![Station { node: needs.crank, kind: "encoder", lines: 360 }];
-    let mut others: Vec<usize> = needs.nodes.iter().copied().filter(|&n| n != needs.crank).collect();
+    let rate_hz = rng.pick(&[
+        1000.0, 1024.0, 2000.0, 2048.0, 2560.0, 4096.0, 5000.0, 10000.0,
+    ]);
+    let mut stations = vec![Station {
+        node: needs.crank,
+        kind: "encoder",
+        lines: 360,
+    }];
+    let mut others: Vec<usize> = needs
+        .nodes
+        .iter()
+        .copied()
+        .filter(|&n| n != needs.crank)
+        .collect();
     let count = rng.int(2, 4).min(others.len() + 1);
     while stations.len() < count {
         let i = rng.int(0, others.len() - 1);
         let node = others.remove(i);
-        stations.push(Station { node, kind: "zebra", lines: rng.pick(&[78, 94, 120]) });
+        stations.push(Station {
+            node,
+            kind: "zebra",
+            lines: rng.pick(&[78, 94, 120]),
+        });
     }
     let (lo, hi) = (needs.speed_lo_rpm, needs.speed_hi_rpm);
     let n_reg = rng.int(3, 8);
@@ -108,8 +123,15 @@ pub fn draw(rng: &mut Rng, needs: &Needs) -> Campaign {
         let down = rng.chance(0.25);
         let (a, b) = if down { (hi, lo) } else { (lo, hi) };
         recordings.push(Recording {
-            stem: if down { "run-down".into() } else { "run-up".into() },
-            label: format!("Run {} {a:.0} to {b:.0} rpm, full load", if down { "down" } else { "up" }),
+            stem: if down {
+                "run-down".into()
+            } else {
+                "run-up".into()
+            },
+            label: format!(
+                "Run {} {a:.0} to {b:.0} rpm, full load",
+                if down { "down" } else { "up" }
+            ),
             run_up: true,
             from_rpm: a,
             to_rpm: b,
@@ -123,7 +145,11 @@ pub fn draw(rng: &mut Rng, needs: &Needs) -> Campaign {
         noise_rpm: rng.log_range(0.05, 0.5),
         wobble: rng.log_range(5e-4, 3e-3),
         wobble_period_s: rng.range(3.0, 10.0),
-        clock_start_s: if rng.chance(0.5) { (rng.range(10.0, 500.0) * 10.0).round() / 10.0 } else { 0.0 },
+        clock_start_s: if rng.chance(0.5) {
+            (rng.range(10.0, 500.0) * 10.0).round() / 10.0
+        } else {
+            0.0
+        },
         recordings,
     }
 }

@@ -5,7 +5,7 @@
 use crate::campaign::{self, Campaign, Needs};
 use crate::driveline::{Connection, Driveline, Engine, Kind, Node, PressureCurve};
 use crate::effects::*;
-use crate::engine::{pressure_curve, EngineLaw, Kinematics};
+use crate::engine::{EngineLaw, Kinematics, pressure_curve};
 use crate::rng::Rng;
 use std::f64::consts::TAU;
 
@@ -37,15 +37,32 @@ pub fn class_of(seed: u64) -> &'static str {
 
 fn engine(rng: &mut Rng, six: bool, node: usize) -> (Engine, f64, f64) {
     let (bore, r, m, peak, eps) = if six {
-        (rng.range(0.11, 0.13), rng.range(0.06, 0.07), rng.range(2.0, 3.5), rng.range(70.0, 100.0), 16.0)
+        (
+            rng.range(0.11, 0.13),
+            rng.range(0.06, 0.07),
+            rng.range(2.0, 3.5),
+            rng.range(70.0, 100.0),
+            16.0,
+        )
     } else {
-        (rng.range(0.078, 0.09), rng.range(0.04, 0.046), rng.range(0.45, 0.7), rng.range(40.0, 60.0), 10.0)
+        (
+            rng.range(0.078, 0.09),
+            rng.range(0.04, 0.046),
+            rng.range(0.45, 0.7),
+            rng.range(40.0, 60.0),
+            10.0,
+        )
     };
     let lambda = rng.range(0.27, 0.32);
     let mut pressure = Vec::new();
     for (load, k) in [(0.3, 0.3), (0.6, 0.62), (1.0, 1.0)] {
-        let (angle_deg, bar) = pressure_curve(eps, peak * k, rng.range(10.0, 16.0), -0.6 * (1.0 - k));
-        pressure.push(PressureCurve { load, angle_deg, bar });
+        let (angle_deg, bar) =
+            pressure_curve(eps, peak * k, rng.range(10.0, 16.0), -0.6 * (1.0 - k));
+        pressure.push(PressureCurve {
+            load,
+            angle_deg,
+            bar,
+        });
     }
     let firing_deg = if six {
         vec![0.0, 480.0, 240.0, 600.0, 120.0, 360.0]
@@ -53,9 +70,15 @@ fn engine(rng: &mut Rng, six: bool, node: usize) -> (Engine, f64, f64) {
         vec![0.0, 540.0, 180.0, 360.0]
     };
     let (lo, hi) = if six {
-        (rng.range(700.0, 1000.0).round(), rng.range(2000.0, 2800.0).round())
+        (
+            rng.range(700.0, 1000.0).round(),
+            rng.range(2000.0, 2800.0).round(),
+        )
     } else {
-        (rng.range(1000.0, 1600.0).round(), rng.range(3800.0, 6000.0).round())
+        (
+            rng.range(1000.0, 1600.0).round(),
+            rng.range(3800.0, 6000.0).round(),
+        )
     };
     let e = Engine {
         node,
@@ -71,14 +94,34 @@ fn engine(rng: &mut Rng, six: bool, node: usize) -> (Engine, f64, f64) {
 
 /// The topology: nodes, connections; returns the truth driveline before damping.
 fn topology(rng: &mut Rng, n: usize, six: bool, gear: bool) -> (Driveline, f64, f64) {
-    let j_crank = if six { rng.range(0.8, 2.0) } else { rng.range(0.15, 0.4) };
+    let j_crank = if six {
+        rng.range(0.8, 2.0)
+    } else {
+        rng.range(0.15, 0.4)
+    };
     let (eng, lo, hi) = engine(rng, six, 0);
-    let mut nodes = vec![Node { name: "crank".into(), inertia_kg_m2: j_crank, damping_nm_s: rng.range(0.05, 0.5) }];
+    let mut nodes = vec![Node {
+        name: "crank".into(),
+        inertia_kg_m2: j_crank,
+        damping_nm_s: rng.range(0.05, 0.5),
+    }];
     // Main line length: the rest hang as branches.
-    let branches = if n >= 5 && rng.chance(0.5) { rng.int(1, (n - 3).min(3)) } else { 0 };
+    let branches = if n >= 5 && rng.chance(0.5) {
+        rng.int(1, (n - 3).min(3))
+    } else {
+        0
+    };
     let main = n - branches;
-    let gear_at = if gear { rng.int(0, main - 2) } else { usize::MAX };
-    let ratio = if gear { (rng.range(0.3, 3.5) * 100.0).round() / 100.0 } else { 1.0 };
+    let gear_at = if gear {
+        rng.int(0, main - 2)
+    } else {
+        usize::MAX
+    };
+    let ratio = if gear {
+        (rng.range(0.3, 3.5) * 100.0).round() / 100.0
+    } else {
+        1.0
+    };
     let rubbers = if main >= 4 && rng.chance(0.4) { 2 } else { 1 };
     let mut rubber_at: Vec<usize> = Vec::new();
     while rubber_at.len() < rubbers {
@@ -90,33 +133,70 @@ fn topology(rng: &mut Rng, n: usize, six: bool, gear: bool) -> (Driveline, f64, 
     let mut conns = Vec::new();
     for i in 1..main {
         let last = i == main - 1;
-        let name = if last { "brake".to_string() } else { format!("mass{i}") };
-        let scale = if last { rng.range(1.0, 5.0) } else { rng.log_range(0.03, 0.8) };
-        nodes.push(Node { name, inertia_kg_m2: j_crank * scale, damping_nm_s: 0.0 });
+        let name = if last {
+            "brake".to_string()
+        } else {
+            format!("mass{i}")
+        };
+        let scale = if last {
+            rng.range(1.0, 5.0)
+        } else {
+            rng.log_range(0.03, 0.8)
+        };
+        nodes.push(Node {
+            name,
+            inertia_kg_m2: j_crank * scale,
+            damping_nm_s: 0.0,
+        });
         let k = i - 1;
         let kind = if k == gear_at {
-            Kind::Gear { ratio, mesh_stiffness: rng.log_range(3e5, 2e6), mesh_damping: 0.0 }
+            Kind::Gear {
+                ratio,
+                mesh_stiffness: rng.log_range(3e5, 2e6),
+                mesh_damping: 0.0,
+            }
         } else if rubber_at.contains(&k) {
-            Kind::Rubber { stiffness: rng.log_range(5e3, 4e4), psi: 1.0 }
+            Kind::Rubber {
+                stiffness: rng.log_range(5e3, 4e4),
+                psi: 1.0,
+            }
         } else {
-            Kind::Shaft { stiffness: rng.log_range(5e4, 5e5), damping: 0.0 }
+            Kind::Shaft {
+                stiffness: rng.log_range(5e4, 5e5),
+                damping: 0.0,
+            }
         };
         let cname = match kind {
             Kind::Gear { .. } => "gearbox".to_string(),
-            Kind::Rubber { .. } => format!("coupling{}", rubber_at.iter().position(|&r| r == k).unwrap_or(0) + 1),
+            Kind::Rubber { .. } => format!(
+                "coupling{}",
+                rubber_at.iter().position(|&r| r == k).unwrap_or(0) + 1
+            ),
             Kind::Shaft { .. } => format!("shaft{i}"),
         };
-        conns.push(Connection { name: cname, from: k, to: i, kind });
+        conns.push(Connection {
+            name: cname,
+            from: k,
+            to: i,
+            kind,
+        });
     }
     for b in 0..branches {
         let host = rng.int(0, main - 2);
         let idx = nodes.len();
-        nodes.push(Node { name: format!("aux{}", b + 1), inertia_kg_m2: j_crank * rng.log_range(0.05, 0.5), damping_nm_s: 0.0 });
+        nodes.push(Node {
+            name: format!("aux{}", b + 1),
+            inertia_kg_m2: j_crank * rng.log_range(0.05, 0.5),
+            damping_nm_s: 0.0,
+        });
         conns.push(Connection {
             name: format!("aux_shaft{}", b + 1),
             from: host,
             to: idx,
-            kind: Kind::Shaft { stiffness: rng.log_range(2e4, 2e5), damping: 0.0 },
+            kind: Kind::Shaft {
+                stiffness: rng.log_range(2e4, 2e5),
+                damping: 0.0,
+            },
         });
     }
     let load_node = main - 1;
@@ -146,7 +226,11 @@ fn tune(d: &mut Driveline, f1: f64, zeta: f64) {
     for c in &mut d.connections {
         match &mut c.kind {
             Kind::Shaft { stiffness, damping } => *damping = 0.02 * *stiffness / w1,
-            Kind::Gear { mesh_stiffness, mesh_damping, .. } => *mesh_damping = 0.02 * *mesh_stiffness / w1,
+            Kind::Gear {
+                mesh_stiffness,
+                mesh_damping,
+                ..
+            } => *mesh_damping = 0.02 * *mesh_stiffness / w1,
             Kind::Rubber { .. } => {}
         }
     }
@@ -167,7 +251,9 @@ fn tune(d: &mut Driveline, f1: f64, zeta: f64) {
 }
 
 fn rubbers(d: &Driveline) -> Vec<usize> {
-    (0..d.connections.len()).filter(|&i| matches!(d.connections[i].kind, Kind::Rubber { .. })).collect()
+    (0..d.connections.len())
+        .filter(|&i| matches!(d.connections[i].kind, Kind::Rubber { .. }))
+        .collect()
 }
 
 /// Mean torque through connection `c` at full load (N·m, in its `to` shaft).
@@ -180,7 +266,10 @@ fn through_torque(d: &Driveline, c: usize) -> f64 {
 pub fn draw_case(seed: u64, class: Option<&str>) -> Result<Case, String> {
     let class = class.unwrap_or(class_of(seed)).to_string();
     if !CLASSES.contains(&class.as_str()) {
-        return Err(format!("unknown class `{class}`; one of {}", CLASSES.join(", ")));
+        return Err(format!(
+            "unknown class `{class}`; one of {}",
+            CLASSES.join(", ")
+        ));
     }
     let mut rng = Rng::new(seed, 1);
     let six = class == "cylinder_imbalance" || rng.chance(0.5);
@@ -195,7 +284,8 @@ pub fn draw_case(seed: u64, class: Option<&str>) -> Result<Case, String> {
         let zeta = rng.log_range(0.005, 0.10);
         tune(&mut d, f1, zeta);
         let m = d.modes();
-        if m.freq_hz.iter().all(|f| f.is_finite()) && m.freq_hz.last().is_some_and(|&f| f < 1500.0) {
+        if m.freq_hz.iter().all(|f| f.is_finite()) && m.freq_hz.last().is_some_and(|&f| f < 1500.0)
+        {
             break (d, lo, hi, zeta);
         }
     };
@@ -219,11 +309,17 @@ pub fn draw_case(seed: u64, class: Option<&str>) -> Result<Case, String> {
             let law = if rng.chance(0.5) {
                 let p = rng.pick(&[1.0, 2.0, 3.0]);
                 form = format!("power_p{p}");
-                AmplitudeLaw::Power { a: g / ts.abs().powf(p), p }
+                AmplitudeLaw::Power {
+                    a: g / ts.abs().powf(p),
+                    p,
+                }
             } else {
                 form = "tanh".into();
                 let theta_s = ts.abs() * rng.range(0.8, 1.5);
-                AmplitudeLaw::Tanh { a: g / (ts / theta_s).powi(2).tanh(), theta_s }
+                AmplitudeLaw::Tanh {
+                    a: g / (ts / theta_s).powi(2).tanh(),
+                    theta_s,
+                }
             };
             params.push(("stiffening_at_full_load".into(), g));
             effect = Effect::AmplitudeNonlinearity { conn: c, law };
@@ -240,7 +336,12 @@ pub fn draw_case(seed: u64, class: Option<&str>) -> Result<Case, String> {
                 form = "fractional_zener".into();
                 let delta = rng.range(0.3, 0.8);
                 params.push(("delta".into(), delta));
-                FrequencyLaw::FractionalZener { delta, alpha: rng.range(0.3, 0.6), f_relax_hz: f1 * rng.range(1.0, 4.0), f0_hz: f1 }
+                FrequencyLaw::FractionalZener {
+                    delta,
+                    alpha: rng.range(0.3, 0.6),
+                    f_relax_hz: f1 * rng.range(1.0, 4.0),
+                    f0_hz: f1,
+                }
             };
             effect = Effect::FrequencyDependence { conn: c, law };
             place = Some(("connection".into(), vec![truth.connections[c].name.clone()]));
@@ -249,13 +350,24 @@ pub fn draw_case(seed: u64, class: Option<&str>) -> Result<Case, String> {
             let c = pick_rubber(&mut rng);
             let softening = if rng.chance(0.5) {
                 form = "exponential".into();
-                Softening::Exponential { beta_per_k: rng.range(0.005, 0.012) }
+                Softening::Exponential {
+                    beta_per_k: rng.range(0.005, 0.012),
+                }
             } else {
                 form = "linear".into();
-                Softening::Linear { beta_per_k: rng.range(0.004, 0.01) }
+                Softening::Linear {
+                    beta_per_k: rng.range(0.004, 0.01),
+                }
             };
             // Sized after the campaign is drawn (needs the loss power).
-            effect = Effect::ThermalDrift { conn: c, law: Thermal { capacity_j_per_k: 1.0, conductance_w_per_k: 0.0, softening } };
+            effect = Effect::ThermalDrift {
+                conn: c,
+                law: Thermal {
+                    capacity_j_per_k: 1.0,
+                    conductance_w_per_k: 0.0,
+                    softening,
+                },
+            };
             place = Some(("connection".into(), vec![truth.connections[c].name.clone()]));
         }
         "hysteretic_damping" => {
@@ -265,13 +377,19 @@ pub fn draw_case(seed: u64, class: Option<&str>) -> Result<Case, String> {
                 _ => (1.0, 1.0),
             };
             // The user's model: seed 001 eq. 2, c = k·γ/(2π·ω) at the first mode.
-            user.connections[c].kind = Kind::Shaft { stiffness: k, damping: k * psi / (TAU * TAU * f1) };
+            user.connections[c].kind = Kind::Shaft {
+                stiffness: k,
+                damping: k * psi / (TAU * TAU * f1),
+            };
             let law = if rng.chance(0.5) {
                 form = "structural".into();
                 HystereticLaw::Structural
             } else {
                 form = "dahl".into();
-                HystereticLaw::Dahl { f_c_nm: 0.0, sigma_nm_per_rad: 3.0 * k }
+                HystereticLaw::Dahl {
+                    f_c_nm: 0.0,
+                    sigma_nm_per_rad: 3.0 * k,
+                }
             };
             effect = Effect::Hysteretic { conn: c, law };
             place = Some(("connection".into(), vec![truth.connections[c].name.clone()]));
@@ -285,16 +403,35 @@ pub fn draw_case(seed: u64, class: Option<&str>) -> Result<Case, String> {
             let kx = jx * (TAU * fx).powi(2);
             let zx = rng.range(0.01, 0.04);
             let name = format!("{}_local", truth.nodes[host].name);
-            truth.nodes.push(Node { name: name.clone(), inertia_kg_m2: jx, damping_nm_s: 0.0 });
+            truth.nodes.push(Node {
+                name: name.clone(),
+                inertia_kg_m2: jx,
+                damping_nm_s: 0.0,
+            });
             let idx = truth.nodes.len() - 1;
             let damping = 2.0 * zx * jx * TAU * fx;
-            form = if rng.chance(0.5) { "branch_viscous".into() } else { "branch_rubber".into() };
-            let kind = if form == "branch_viscous" {
-                Kind::Shaft { stiffness: kx, damping }
+            form = if rng.chance(0.5) {
+                "branch_viscous".into()
             } else {
-                Kind::Rubber { stiffness: kx, psi: 2.0 * zx * TAU }
+                "branch_rubber".into()
             };
-            truth.connections.push(Connection { name: format!("{name}_spring"), from: host, to: idx, kind });
+            let kind = if form == "branch_viscous" {
+                Kind::Shaft {
+                    stiffness: kx,
+                    damping,
+                }
+            } else {
+                Kind::Rubber {
+                    stiffness: kx,
+                    psi: 2.0 * zx * TAU,
+                }
+            };
+            truth.connections.push(Connection {
+                name: format!("{name}_spring"),
+                from: host,
+                to: idx,
+                kind,
+            });
             user.nodes[host].inertia_kg_m2 += jx;
             params.push(("inertia_kg_m2".into(), jx));
             params.push(("frequency_hz".into(), fx));
@@ -310,27 +447,45 @@ pub fn draw_case(seed: u64, class: Option<&str>) -> Result<Case, String> {
         }
         "crank_variable_inertia" => {
             let exact = rng.chance(0.5);
-            form = if exact { "exact_slider_crank".into() } else { "first_order_lambda".into() };
+            form = if exact {
+                "exact_slider_crank".into()
+            } else {
+                "first_order_lambda".into()
+            };
             let e = &truth.engine;
             let lam = e.crank_radius_m / e.conrod_m;
-            let mean = e.firing_deg.len() as f64 * e.reciprocating_kg * e.crank_radius_m.powi(2) * (0.5 + lam * lam / 8.0);
+            let mean = e.firing_deg.len() as f64
+                * e.reciprocating_kg
+                * e.crank_radius_m.powi(2)
+                * (0.5 + lam * lam / 8.0);
             user.engine.reciprocating_kg = 0.0;
             user.nodes[e.node].inertia_kg_m2 += mean;
             params.push(("reciprocating_mass_kg".into(), e.reciprocating_kg));
             effect = Effect::CrankVariableInertia { exact };
         }
         "gear_backlash" => {
-            let c = (0..truth.connections.len()).find(|&i| matches!(truth.connections[i].kind, Kind::Gear { .. })).unwrap_or(0);
+            let c = (0..truth.connections.len())
+                .find(|&i| matches!(truth.connections[i].kind, Kind::Gear { .. }))
+                .unwrap_or(0);
             let b_deg = rng.range(0.05, 0.3);
             let h = b_deg.to_radians() / 2.0;
             let eps = h * rng.range(0.1, 0.3);
             let law = if rng.chance(0.5) {
                 form = "softened_dead_zone".into();
-                BacklashLaw::Softened { half_rad: h, eps_rad: eps }
+                BacklashLaw::Softened {
+                    half_rad: h,
+                    eps_rad: eps,
+                }
             } else {
                 form = "hertzian".into();
-                let s_ref = (through_torque(&truth, c) / truth.connections[c].stiffness()).abs().max(h);
-                BacklashLaw::Hertzian { half_rad: h, eps_rad: eps, s_ref_rad: s_ref }
+                let s_ref = (through_torque(&truth, c) / truth.connections[c].stiffness())
+                    .abs()
+                    .max(h);
+                BacklashLaw::Hertzian {
+                    half_rad: h,
+                    eps_rad: eps,
+                    s_ref_rad: s_ref,
+                }
             };
             params.push(("backlash_deg".into(), b_deg));
             effect = Effect::GearBacklash { conn: c, law };
@@ -341,15 +496,22 @@ pub fn draw_case(seed: u64, class: Option<&str>) -> Result<Case, String> {
             let law = match rng.int(0, 2) {
                 0 => {
                     form = "pressure_scale".into();
-                    CylinderLaw::Scale { scale: 1.0 + rng.sign() * rng.range(0.05, 0.15) }
+                    CylinderLaw::Scale {
+                        scale: 1.0 + rng.sign() * rng.range(0.05, 0.15),
+                    }
                 }
                 1 => {
                     form = "misfire".into();
-                    CylinderLaw::Misfire { residual: rng.range(0.0, 0.2) }
+                    CylinderLaw::Misfire {
+                        residual: rng.range(0.0, 0.2),
+                    }
                 }
                 _ => {
                     form = "late_combustion".into();
-                    CylinderLaw::Late { delay_deg: rng.range(4.0, 10.0), scale: rng.range(0.85, 1.0) }
+                    CylinderLaw::Late {
+                        delay_deg: rng.range(4.0, 10.0),
+                        scale: rng.range(0.85, 1.0),
+                    }
                 }
             };
             params.push(("cylinder".into(), (cyl + 1) as f64));
@@ -375,7 +537,10 @@ pub fn draw_case(seed: u64, class: Option<&str>) -> Result<Case, String> {
         for c in 0..n_conn {
             let f = 1.0 + rng.range(-0.03, 0.03);
             scale_stiffness(&mut user.connections[c].kind, f);
-            errors.push((format!("connection.{}.stiffness", user.connections[c].name), f));
+            errors.push((
+                format!("connection.{}.stiffness", user.connections[c].name),
+                f,
+            ));
         }
     }
     // Unmodelled mode: the user's model has no local node or spring.
@@ -398,18 +563,33 @@ pub fn draw_case(seed: u64, class: Option<&str>) -> Result<Case, String> {
         let angle_rad = rng.range(0.0, TAU);
         let law = if st.kind == "zebra" && rng.chance(0.6) {
             form = "tape_joint".into();
-            SensorLaw::TapeJoint { fraction: rng.sign() * rng.range(0.03, 0.1), lines: st.lines, angle_rad }
+            SensorLaw::TapeJoint {
+                fraction: rng.sign() * rng.range(0.03, 0.1),
+                lines: st.lines,
+                angle_rad,
+            }
         } else if rng.chance(0.5) {
             form = "eccentricity".into();
-            SensorLaw::Eccentricity { e_rad: rng.range(5e-4, 2e-3), phase_rad: angle_rad }
+            SensorLaw::Eccentricity {
+                e_rad: rng.range(5e-4, 2e-3),
+                phase_rad: angle_rad,
+            }
         } else {
             form = "missing_tooth".into();
-            SensorLaw::MissingTooth { fraction: rng.range(0.1, 0.3), lines: st.lines, angle_rad }
+            SensorLaw::MissingTooth {
+                fraction: rng.range(0.1, 0.3),
+                lines: st.lines,
+                angle_rad,
+            }
         };
         effect = Effect::SensorArtifact { station: s, law };
         place = Some(("station".into(), vec![truth.nodes[st.node].name.clone()]));
     }
-    user.name = format!("Bench {seed}: {} nodes, {} connections", user.nodes.len(), user.connections.len());
+    user.name = format!(
+        "Bench {seed}: {} nodes, {} connections",
+        user.nodes.len(),
+        user.connections.len()
+    );
     let mut case = Case {
         seed,
         class,
@@ -435,7 +615,14 @@ fn scale_stiffness(k: &mut Kind, f: f64) {
     }
 }
 
-fn perturb(user: &mut Driveline, rng: &mut Rng, n: usize, nc: usize, f: f64, errors: &mut Vec<(String, f64)>) {
+fn perturb(
+    user: &mut Driveline,
+    rng: &mut Rng,
+    n: usize,
+    nc: usize,
+    f: f64,
+    errors: &mut Vec<(String, f64)>,
+) {
     if rng.chance(0.5) {
         let i = rng.int(0, n - 1);
         user.nodes[i].inertia_kg_m2 *= f;
@@ -443,6 +630,9 @@ fn perturb(user: &mut Driveline, rng: &mut Rng, n: usize, nc: usize, f: f64, err
     } else {
         let c = rng.int(0, nc - 1);
         scale_stiffness(&mut user.connections[c].kind, f);
-        errors.push((format!("connection.{}.stiffness", user.connections[c].name), f));
+        errors.push((
+            format!("connection.{}.stiffness", user.connections[c].name),
+            f,
+        ));
     }
 }

@@ -93,7 +93,11 @@ pub enum BacklashLaw {
     /// Softened dead zone: s(δ) = ½[(δ−h)+√((δ−h)²+ε²)] + ½[(δ+h)−√((δ+h)²+ε²)].
     Softened { half_rad: f64, eps_rad: f64 },
     /// Hertz-like contact after the play: k·s^1.5/√s_ref, s the softened penetration.
-    Hertzian { half_rad: f64, eps_rad: f64, s_ref_rad: f64 },
+    Hertzian {
+        half_rad: f64,
+        eps_rad: f64,
+        s_ref_rad: f64,
+    },
 }
 
 impl BacklashLaw {
@@ -133,11 +137,19 @@ pub enum CylinderLaw {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum SensorLaw {
     /// Zebra-tape butt joint: one pitch is `fraction` longer, once per revolution.
-    TapeJoint { fraction: f64, lines: u32, angle_rad: f64 },
+    TapeJoint {
+        fraction: f64,
+        lines: u32,
+        angle_rad: f64,
+    },
     /// Encoder eccentricity: angle error e·sin(θ + φ), once per revolution.
     Eccentricity { e_rad: f64, phase_rad: f64 },
     /// Missing tooth, incompletely compensated: one pitch reads `fraction` long.
-    MissingTooth { fraction: f64, lines: u32, angle_rad: f64 },
+    MissingTooth {
+        fraction: f64,
+        lines: u32,
+        angle_rad: f64,
+    },
 }
 
 /// What the truth has that the user's model lacks.
@@ -146,14 +158,84 @@ pub enum Effect {
     None,
     /// Only plain parameters off (the user's model carries the error).
     ParameterError,
-    AmplitudeNonlinearity { conn: usize, law: AmplitudeLaw },
-    FrequencyDependence { conn: usize, law: FrequencyLaw },
-    ThermalDrift { conn: usize, law: Thermal },
-    Hysteretic { conn: usize, law: HystereticLaw },
+    AmplitudeNonlinearity {
+        conn: usize,
+        law: AmplitudeLaw,
+    },
+    FrequencyDependence {
+        conn: usize,
+        law: FrequencyLaw,
+    },
+    ThermalDrift {
+        conn: usize,
+        law: Thermal,
+    },
+    Hysteretic {
+        conn: usize,
+        law: HystereticLaw,
+    },
     /// The truth's extra node (last node) and its spring (last connection), at `host`.
-    UnmodelledMode { host: usize },
-    CrankVariableInertia { exact: bool },
-    GearBacklash { conn: usize, law: BacklashLaw },
-    CylinderImbalance { cylinder: usize, law: CylinderLaw },
-    SensorArtifact { station: usize, law: SensorLaw },
+    UnmodelledMode {
+        host: usize,
+    },
+    CrankVariableInertia {
+        exact: bool,
+    },
+    GearBacklash {
+        conn: usize,
+        law: BacklashLaw,
+    },
+    CylinderImbalance {
+        cylinder: usize,
+        law: CylinderLaw,
+    },
+    SensorArtifact {
+        station: usize,
+        law: SensorLaw,
+    },
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn each_form_changes_what_it_should() {
+        // Amplitude laws stiffen with twist and are 1 at zero twist.
+        for law in [
+            AmplitudeLaw::Power { a: 100.0, p: 2.0 },
+            AmplitudeLaw::Tanh {
+                a: 0.3,
+                theta_s: 0.01,
+            },
+        ] {
+            assert_eq!(law.factor(0.0), 1.0);
+            assert!(law.factor(0.02) > law.factor(0.01) && law.factor(0.01) > 1.0);
+        }
+        // Softening lowers stiffness with temperature rise, linear law held at 0.3.
+        assert!(Softening::Exponential { beta_per_k: 0.01 }.factor(10.0) < 1.0);
+        assert_eq!(Softening::Linear { beta_per_k: 0.01 }.factor(1000.0), 0.3);
+        // Backlash: (almost) no deflection inside the play, full slope outside.
+        let h = 1e-3;
+        for law in [
+            BacklashLaw::Softened {
+                half_rad: h,
+                eps_rad: 1e-4,
+            },
+            BacklashLaw::Hertzian {
+                half_rad: h,
+                eps_rad: 1e-4,
+                s_ref_rad: 1e-3,
+            },
+        ] {
+            assert!(law.deflection(0.5 * h).abs() < 0.01 * h);
+            assert!(law.deflection(3.0 * h) > 1.5 * h && law.deflection(-3.0 * h) < -1.5 * h);
+        }
+        let soft = BacklashLaw::Softened {
+            half_rad: h,
+            eps_rad: 1e-4,
+        };
+        // far outside the play the slope is 1 (to 1e-6: the ε² correction)
+        assert!(((soft.deflection(0.1) - soft.deflection(0.09)) / 0.01 - 1.0).abs() < 1e-6);
+    }
 }

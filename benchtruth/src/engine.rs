@@ -115,7 +115,8 @@ impl EngineLaw {
         for (i, f) in self.firing_rad.iter().enumerate() {
             let phi = theta - f;
             let (rv, ra) = self.ratios(phi);
-            t += self.pressure(i, phi) * self.area_m2 * rv - self.recip_kg * omega * omega * ra * rv;
+            t +=
+                self.pressure(i, phi) * self.area_m2 * rv - self.recip_kg * omega * omega * ra * rv;
             j += self.recip_kg * rv * rv;
         }
         (t, j)
@@ -125,7 +126,10 @@ impl EngineLaw {
     pub fn mean_torque(&self) -> f64 {
         let n = 2880;
         (0..n)
-            .map(|k| self.torque(k as f64 / n as f64 * 2.0 * std::f64::consts::TAU, 0.0).0)
+            .map(|k| {
+                self.torque(k as f64 / n as f64 * 2.0 * std::f64::consts::TAU, 0.0)
+                    .0
+            })
             .sum::<f64>()
             / n as f64
     }
@@ -134,7 +138,12 @@ impl EngineLaw {
 /// A four-stroke gauge pressure curve (bar at integer degrees from firing TDC): a
 /// polytropic compression/expansion (κ = 1.32, compression ratio `eps`) plus a Gaussian
 /// combustion bump of `peak_bar` at `peak_deg` after TDC, intake at `intake_bar` gauge.
-pub fn pressure_curve(eps: f64, peak_bar: f64, peak_deg: f64, intake_bar: f64) -> (Vec<f64>, Vec<f64>) {
+pub fn pressure_curve(
+    eps: f64,
+    peak_bar: f64,
+    peak_deg: f64,
+    intake_bar: f64,
+) -> (Vec<f64>, Vec<f64>) {
     let mut ang = Vec::new();
     let mut bar = Vec::new();
     let mut a = -360.0f64;

@@ -7,19 +7,19 @@
 //! reaches torsim only through files and the `torsim diagnose` command; it does not
 //! depend on the torsim crate (checked by `tests/independence.rs`).
 
+pub mod bench;
+pub mod campaign;
+pub mod draw;
 pub mod driveline;
 pub mod effects;
 pub mod engine;
 pub mod integrate;
 pub mod plant;
 pub mod rng;
-pub mod visco;
-pub mod bench;
-pub mod campaign;
-pub mod draw;
 pub mod sim;
 pub mod sizing;
+pub mod visco;
 pub mod write;
 
-pub use bench::{score, Outcome};
-pub use write::{write_case, CaseFiles, WriteError};
+pub use bench::{Outcome, score};
+pub use write::{CaseFiles, WriteError, write_case};

@@ -4,7 +4,10 @@ use clap::{Parser, Subcommand};
 use std::path::PathBuf;
 
 #[derive(Parser)]
-#[command(name = "benchtruth", about = "An independent test bench for torsim's diagnosis")]
+#[command(
+    name = "benchtruth",
+    about = "An independent test bench for torsim's diagnosis"
+)]
 struct Cli {
     #[command(subcommand)]
     cmd: Cmd,
@@ -39,7 +42,13 @@ fn main() -> Result<()> {
     match Cli::parse().cmd {
         Cmd::Draw { seed, out, class } => {
             let f = benchtruth::write_case(seed, class.as_deref(), &out)?;
-            println!("{} ({}) -> {}: {} recordings", f.class, f.form, out.display(), f.recordings.len());
+            println!(
+                "{} ({}) -> {}: {} recordings",
+                f.class,
+                f.form,
+                out.display(),
+                f.recordings.len()
+            );
         }
         Cmd::Bench { torsim, seeds, out } => {
             let (a, b) = seeds
@@ -49,16 +58,27 @@ fn main() -> Result<()> {
             std::fs::create_dir_all(&out)?;
             let mut rows = Vec::new();
             for seed in a..=b {
-                let row = benchtruth::bench::run_case(&torsim, seed, &out.join(format!("case-{seed}")));
+                let row =
+                    benchtruth::bench::run_case(&torsim, seed, &out.join(format!("case-{seed}")));
                 match &row.outcome {
-                    Ok(o) => eprintln!("seed {seed}: {} ({}) -> {} [{}] {:.1} s", o.truth, row.form, o.verdict, if o.right { "right" } else { "wrong" }, row.seconds),
+                    Ok(o) => eprintln!(
+                        "seed {seed}: {} ({}) -> {} [{}] {:.1} s",
+                        o.truth,
+                        row.form,
+                        o.verdict,
+                        if o.right { "right" } else { "wrong" },
+                        row.seconds
+                    ),
                     Err(e) => eprintln!("seed {seed}: error: {e}"),
                 }
                 rows.push(row);
             }
             let md = benchtruth::bench::summary(&rows, a, b);
             std::fs::write(out.join("summary.md"), &md)?;
-            std::fs::write(out.join("results.csv"), benchtruth::bench::results_csv(&rows))?;
+            std::fs::write(
+                out.join("results.csv"),
+                benchtruth::bench::results_csv(&rows),
+            )?;
             println!("{md}");
         }
     }

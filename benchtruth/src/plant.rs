@@ -15,15 +15,27 @@ use std::f64::consts::TAU;
 /// A connection's law in the truth.
 #[derive(Debug, Clone)]
 enum Link {
-    Linear { k: f64, c: f64 },
+    Linear {
+        k: f64,
+        c: f64,
+    },
     Visco {
         bank: Bank,
         amp: Option<AmplitudeLaw>,
         thermal: Option<(Thermal, usize)>,
         off: usize,
     },
-    Dahl { k: f64, fc: f64, sigma: f64, off: usize },
-    Gear { k: f64, c: f64, play: Option<BacklashLaw> },
+    Dahl {
+        k: f64,
+        fc: f64,
+        sigma: f64,
+        off: usize,
+    },
+    Gear {
+        k: f64,
+        c: f64,
+        play: Option<BacklashLaw>,
+    },
 }
 
 /// The reference speed the bench's controller follows (engine shaft, rad/s).
@@ -100,8 +112,15 @@ impl Plant {
         let mut fastest: f64 = 0.0;
         for (i, c) in d.connections.iter().enumerate() {
             let link = match c.kind {
-                Kind::Shaft { stiffness, damping } => Link::Linear { k: stiffness, c: damping },
-                Kind::Gear { mesh_stiffness, mesh_damping, .. } => Link::Gear {
+                Kind::Shaft { stiffness, damping } => Link::Linear {
+                    k: stiffness,
+                    c: damping,
+                },
+                Kind::Gear {
+                    mesh_stiffness,
+                    mesh_damping,
+                    ..
+                } => Link::Gear {
                     k: mesh_stiffness,
                     c: mesh_damping,
                     play: match effect {
@@ -112,31 +131,58 @@ impl Plant {
                 Kind::Rubber { stiffness, psi } => {
                     let xi = psi / TAU;
                     match effect {
-                        Effect::Hysteretic { conn, law: HystereticLaw::Dahl { f_c_nm, sigma_nm_per_rad } }
-                            if *conn == i =>
-                        {
-                            let l = Link::Dahl { k: stiffness, fc: *f_c_nm, sigma: *sigma_nm_per_rad, off };
+                        Effect::Hysteretic {
+                            conn,
+                            law:
+                                HystereticLaw::Dahl {
+                                    f_c_nm,
+                                    sigma_nm_per_rad,
+                                },
+                        } if *conn == i => {
+                            let l = Link::Dahl {
+                                k: stiffness,
+                                fc: *f_c_nm,
+                                sigma: *sigma_nm_per_rad,
+                                off,
+                            };
                             off += 1;
                             l
                         }
                         _ => {
                             let bank = match effect {
                                 Effect::FrequencyDependence { conn, law } if *conn == i => {
-                                    Bank::fit(|f| frequency_target(law, stiffness, xi, f), band.lo_hz, band.hi_hz)
+                                    Bank::fit(
+                                        |f| frequency_target(law, stiffness, xi, f),
+                                        band.lo_hz,
+                                        band.hi_hz,
+                                    )
                                 }
-                                _ => Bank::fit(|_| (stiffness, stiffness * xi), band.lo_hz, band.hi_hz),
+                                _ => Bank::fit(
+                                    |_| (stiffness, stiffness * xi),
+                                    band.lo_hz,
+                                    band.hi_hz,
+                                ),
                             };
                             fastest = bank.rate.iter().fold(fastest, |a, &b| a.max(b));
                             let amp = match effect {
-                                Effect::AmplitudeNonlinearity { conn, law } if *conn == i => Some(*law),
+                                Effect::AmplitudeNonlinearity { conn, law } if *conn == i => {
+                                    Some(*law)
+                                }
                                 _ => None,
                             };
                             let nb = bank.k.len();
                             let thermal = match effect {
-                                Effect::ThermalDrift { conn, law } if *conn == i => Some((*law, off + nb)),
+                                Effect::ThermalDrift { conn, law } if *conn == i => {
+                                    Some((*law, off + nb))
+                                }
                                 _ => None,
                             };
-                            let l = Link::Visco { bank, amp, thermal, off };
+                            let l = Link::Visco {
+                                bank,
+                                amp,
+                                thermal,
+                                off,
+                            };
                             off += nb + thermal.is_some() as usize;
                             l
                         }
@@ -155,7 +201,9 @@ impl Plant {
             engine.pressure_pa[*cylinder] = unequal_cylinder(&healthy, law);
         }
         let speed_ratio = d.speed_ratios();
-        let j_ref: f64 = (0..n).map(|i| d.nodes[i].inertia_kg_m2 * speed_ratio[i].powi(2)).sum();
+        let j_ref: f64 = (0..n)
+            .map(|i| d.nodes[i].inertia_kg_m2 * speed_ratio[i].powi(2))
+            .sum();
         let load_ratio = speed_ratio[d.load_node];
         let j_load = j_ref / load_ratio.powi(2);
         let kp = d.load_damping_nm_s;
@@ -174,7 +222,9 @@ impl Plant {
             ki: j_load * wn * wn,
             t_mean,
             j_ref,
-            drag_ref: (0..n).map(|i| d.nodes[i].damping_nm_s * speed_ratio[i].powi(2)).sum(),
+            drag_ref: (0..n)
+                .map(|i| d.nodes[i].damping_nm_s * speed_ratio[i].powi(2))
+                .sum(),
             profile,
             len: off + 1,
             fastest_rate: fastest,
@@ -227,15 +277,26 @@ fn frequency_target(law: &FrequencyLaw, k: f64, xi: f64, f: f64) -> (f64, f64) {
             let s = k * (f / f0_hz).powf(n);
             (s, s * xi.max((n * std::f64::consts::FRAC_PI_2).tan()))
         }
-        FrequencyLaw::FractionalZener { delta, alpha, f_relax_hz, f0_hz } => {
+        FrequencyLaw::FractionalZener {
+            delta,
+            alpha,
+            f_relax_hz,
+            f0_hz,
+        } => {
             let z = |f: f64| {
                 // (iωτ)^α = x^α·(cos(απ/2) + i sin(απ/2)), x = f/f_relax
                 let x = (f / f_relax_hz).powf(alpha);
-                let (c, s) = ((alpha * std::f64::consts::FRAC_PI_2).cos(), (alpha * std::f64::consts::FRAC_PI_2).sin());
+                let (c, s) = (
+                    (alpha * std::f64::consts::FRAC_PI_2).cos(),
+                    (alpha * std::f64::consts::FRAC_PI_2).sin(),
+                );
                 let (nr, ni) = (x * c, x * s);
                 let (dr, di) = (1.0 + nr, ni);
                 let m = dr * dr + di * di;
-                (1.0 + delta * (nr * dr + ni * di) / m, delta * (ni * dr - nr * di) / m)
+                (
+                    1.0 + delta * (nr * dr + ni * di) / m,
+                    delta * (ni * dr - nr * di) / m,
+                )
             };
             let (r0, _) = z(f0_hz);
             let (r, i) = z(f);
@@ -247,12 +308,14 @@ fn frequency_target(law: &FrequencyLaw, k: f64, xi: f64, f: f64) -> (f64, f64) {
 /// One cylinder's pressure table after its deviation (1° steps, −360…360°).
 pub fn unequal_cylinder(p: &[f64], law: &CylinderLaw) -> Vec<f64> {
     // The motored curve: the compression half (−360…0°) mirrored about TDC.
-    let motored: Vec<f64> = (0..=720).map(|i| if i <= 360 { p[i] } else { p[720 - i] }).collect();
+    let motored: Vec<f64> = (0..=720)
+        .map(|i| if i <= 360 { p[i] } else { p[720 - i] })
+        .collect();
     match *law {
         CylinderLaw::Scale { scale } => p.iter().map(|x| x * scale).collect(),
-        CylinderLaw::Misfire { residual } => {
-            (0..=720).map(|i| motored[i] + residual * (p[i] - motored[i])).collect()
-        }
+        CylinderLaw::Misfire { residual } => (0..=720)
+            .map(|i| motored[i] + residual * (p[i] - motored[i]))
+            .collect(),
         CylinderLaw::Late { delay_deg, scale } => (0..=720)
             .map(|i| {
                 let src = i as f64 - delay_deg;
@@ -287,7 +350,12 @@ impl System for Plant {
                     dy[*off] = sigma * dd * (1.0 - f / fc * dd.signum());
                     k * d + f
                 }
-                Link::Visco { bank, amp, thermal, off } => {
+                Link::Visco {
+                    bank,
+                    amp,
+                    thermal,
+                    off,
+                } => {
                     let s = thermal.map_or(1.0, |(th, i)| th.softening.factor(y[i]));
                     let g0 = amp.map_or(1.0, |a| a.factor(d));
                     let mut tq = bank.k0 * g0 * d;
@@ -322,5 +390,40 @@ impl System for Plant {
             let j = self.inertia[i] + if i == en { jv } else { 0.0 };
             dy[n + i] = torque[i] / j;
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn cylinder_laws_change_only_the_combustion() {
+        let p: Vec<f64> = (0..=720)
+            .map(|i| {
+                let a = i as f64 - 360.0;
+                1e5 * (10.0 * (-(a / 60.0).powi(2)).exp()
+                    + 40.0 * (-((a - 12.0) / 14.0).powi(2)).exp())
+            })
+            .collect();
+        let scaled = unequal_cylinder(&p, &CylinderLaw::Scale { scale: 0.9 });
+        assert!((scaled[372] / p[372] - 0.9).abs() < 1e-12);
+        let mis = unequal_cylinder(&p, &CylinderLaw::Misfire { residual: 0.0 });
+        // a misfire keeps compression (before TDC) and loses the combustion bump
+        assert_eq!(mis[300], p[300]);
+        assert!(mis[372] < 0.5 * p[372]);
+        let late = unequal_cylinder(
+            &p,
+            &CylinderLaw::Late {
+                delay_deg: 6.0,
+                scale: 1.0,
+            },
+        );
+        let peak = |v: &[f64]| {
+            (360..500)
+                .max_by(|&a, &b| v[a].total_cmp(&v[b]))
+                .unwrap_or(0)
+        };
+        assert!(peak(&late) > peak(&p));
     }
 }

@@ -68,8 +68,18 @@ pub fn run(truth: &Driveline, plant: &Plant, rate_hz: f64, mut each: impl FnMut(
 /// The truth's band for the rubber fits: the excited orders over the campaign's speeds
 /// and the first modes.
 pub fn band(case: &Case) -> Band {
-    let lo_rpm = case.campaign.recordings.iter().map(|r| r.from_rpm.min(r.to_rpm)).fold(f64::INFINITY, f64::min);
-    let hi_rpm = case.campaign.recordings.iter().map(|r| r.from_rpm.max(r.to_rpm)).fold(0.0, f64::max);
+    let lo_rpm = case
+        .campaign
+        .recordings
+        .iter()
+        .map(|r| r.from_rpm.min(r.to_rpm))
+        .fold(f64::INFINITY, f64::min);
+    let hi_rpm = case
+        .campaign
+        .recordings
+        .iter()
+        .map(|r| r.from_rpm.max(r.to_rpm))
+        .fold(0.0, f64::max);
     let f1 = case.modes_hz.first().copied().unwrap_or(10.0);
     Band {
         lo_hz: (0.5 * lo_rpm / 60.0).min(0.7 * f1),

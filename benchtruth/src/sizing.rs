@@ -12,7 +12,12 @@ use crate::sim;
 pub fn size_effect(case: &mut Case, rng: &mut Rng) {
     match case.effect.clone() {
         Effect::ThermalDrift { conn, law } => {
-            let rec = case.campaign.recordings.iter().find(|r| r.stem == "long-run").cloned();
+            let rec = case
+                .campaign
+                .recordings
+                .iter()
+                .find(|r| r.stem == "long-run")
+                .cloned();
             let Some(rec) = rec else { return };
             let (loss_w, _) = pre_run(case, conn, &rec);
             let drop = rng.range(0.03, 0.08);
@@ -23,13 +28,23 @@ pub fn size_effect(case: &mut Case, rng: &mut Rng) {
             let tau = rec.duration_s * rng.range(1.0, 3.0);
             let p = loss_w.max(1e-6);
             let g = p * (1.0 - (-rec.duration_s / tau).exp()) / dt_k;
-            let thermal = Thermal { capacity_j_per_k: g * tau, conductance_w_per_k: g, softening: law.softening };
-            case.params.push(("stiffness_drop_over_long_run".into(), drop));
+            let thermal = Thermal {
+                capacity_j_per_k: g * tau,
+                conductance_w_per_k: g,
+                softening: law.softening,
+            };
+            case.params
+                .push(("stiffness_drop_over_long_run".into(), drop));
             case.params.push(("time_constant_s".into(), tau));
             case.params.push(("capacity_j_per_k".into(), g * tau));
             case.effect = Effect::ThermalDrift { conn, law: thermal };
         }
-        Effect::Hysteretic { conn, law: HystereticLaw::Dahl { sigma_nm_per_rad, .. } } => {
+        Effect::Hysteretic {
+            conn,
+            law: HystereticLaw::Dahl {
+                sigma_nm_per_rad, ..
+            },
+        } => {
             let rec = case.campaign.recordings[case.campaign.recordings.len() / 2].clone();
             let (_, amp) = pre_run(case, conn, &rec);
             let (k, psi) = match case.truth.connections[conn].kind {
@@ -39,7 +54,13 @@ pub fn size_effect(case: &mut Case, rng: &mut Rng) {
             // Coulomb loss 4·F_c·A per cycle = ψ·½kA² (DIN 740's relative damping).
             let f_c = (psi * k * amp / 8.0).max(1e-3);
             case.params.push(("friction_nm".into(), f_c));
-            case.effect = Effect::Hysteretic { conn, law: HystereticLaw::Dahl { f_c_nm: f_c, sigma_nm_per_rad } };
+            case.effect = Effect::Hysteretic {
+                conn,
+                law: HystereticLaw::Dahl {
+                    f_c_nm: f_c,
+                    sigma_nm_per_rad,
+                },
+            };
         }
         _ => {}
     }
@@ -50,7 +71,12 @@ pub fn size_effect(case: &mut Case, rng: &mut Rng) {
 fn pre_run(case: &Case, conn: usize, rec: &crate::campaign::Recording) -> (f64, f64) {
     let mut plain = case.clone();
     plain.effect = Effect::None;
-    let short = crate::campaign::Recording { duration_s: 1.0, from_rpm: rec.from_rpm, to_rpm: rec.from_rpm, ..rec.clone() };
+    let short = crate::campaign::Recording {
+        duration_s: 1.0,
+        from_rpm: rec.from_rpm,
+        to_rpm: rec.from_rpm,
+        ..rec.clone()
+    };
     let plant = sim::plant_for(&plain, &short);
     let c = &case.truth.connections[conn];
     let (from, to, g) = (c.from, c.to, c.lever());

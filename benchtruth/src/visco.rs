@@ -47,7 +47,9 @@ impl Bank {
     /// branches two per decade from f_lo/3 to 3·f_hi. Relative error weighting.
     pub fn fit(target: impl Fn(f64) -> (f64, f64), f_lo: f64, f_hi: f64) -> Self {
         let (lo, hi) = ((f_lo / 3.0).ln(), (f_hi * 3.0).ln());
-        let nb = (((hi - lo) / std::f64::consts::LN_10) * 2.0).ceil().max(2.0) as usize;
+        let nb = (((hi - lo) / std::f64::consts::LN_10) * 2.0)
+            .ceil()
+            .max(2.0) as usize;
         let rate: Vec<f64> = (0..=nb)
             .map(|j| TAU * (lo + (hi - lo) * j as f64 / nb as f64).exp())
             .collect();

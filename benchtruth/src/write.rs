@@ -2,14 +2,14 @@
 //! the recordings (recording-format.md: CSV with `time_s` to the microsecond and a TOML
 //! sidecar), and `truth.toml`, which only the scorer reads. TOML is written by hand.
 
-use crate::draw::{draw_case, Case};
+use crate::draw::{Case, draw_case};
 use crate::driveline::{Driveline, Kind};
 use crate::effects::{Effect, SensorLaw};
 use crate::rng::Rng;
 use crate::sim;
+use std::f64::consts::TAU;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
-use std::f64::consts::TAU;
 
 /// Errors of the writer.
 #[derive(Debug, thiserror::Error)]
@@ -17,7 +17,10 @@ pub enum WriteError {
     #[error("{0}")]
     Draw(String),
     #[error("writing {path}: {source}")]
-    Io { path: PathBuf, source: std::io::Error },
+    Io {
+        path: PathBuf,
+        source: std::io::Error,
+    },
 }
 
 /// The files of a written case.
@@ -33,29 +36,59 @@ pub struct CaseFiles {
 }
 
 fn put(path: &Path, text: &str) -> Result<(), WriteError> {
-    std::fs::write(path, text).map_err(|source| WriteError::Io { path: path.to_path_buf(), source })
+    std::fs::write(path, text).map_err(|source| WriteError::Io {
+        path: path.to_path_buf(),
+        source,
+    })
 }
 
 fn list(xs: &[f64]) -> String {
-    xs.iter().map(|x| format!("{x}")).collect::<Vec<_>>().join(", ")
+    xs.iter()
+        .map(|x| format!("{x}"))
+        .collect::<Vec<_>>()
+        .join(", ")
 }
 
 /// The model file of `d` (spec model-format.md).
 pub fn model_toml(d: &Driveline, lo_rpm: f64, hi_rpm: f64) -> String {
-    let mut s = format!("format = 1\nname = \"{}\"\ndescription = \"Written by benchtruth from the bench's nominal data.\"\n", d.name);
+    let mut s = format!(
+        "format = 1\nname = \"{}\"\ndescription = \"Written by benchtruth from the bench's nominal data.\"\n",
+        d.name
+    );
     for n in &d.nodes {
-        let _ = write!(s, "\n[[inertia]]\nname = \"{}\"\ninertia = {:e}\n", n.name, n.inertia_kg_m2);
+        let _ = write!(
+            s,
+            "\n[[inertia]]\nname = \"{}\"\ninertia = {:e}\n",
+            n.name, n.inertia_kg_m2
+        );
         if n.damping_nm_s > 0.0 {
             let _ = writeln!(s, "damping = {:e}", n.damping_nm_s);
         }
     }
     for c in &d.connections {
         let (from, to) = (&d.nodes[c.from].name, &d.nodes[c.to].name);
-        let _ = write!(s, "\n[[connection]]\nname = \"{}\"\nfrom = \"{from}\"\nto = \"{to}\"\n", c.name);
+        let _ = write!(
+            s,
+            "\n[[connection]]\nname = \"{}\"\nfrom = \"{from}\"\nto = \"{to}\"\n",
+            c.name
+        );
         let _ = match c.kind {
-            Kind::Shaft { stiffness, damping } => writeln!(s, "kind = \"shaft\"\nstiffness = {stiffness:e}\ndamping = {damping:e}"),
-            Kind::Rubber { stiffness, psi } => writeln!(s, "kind = \"rubber\"\nstiffness = {stiffness:e}\npsi = {psi:e}"),
-            Kind::Gear { ratio, mesh_stiffness, .. } => writeln!(s, "kind = \"gear\"\nratio = {ratio}\nmesh_stiffness = {mesh_stiffness:e}"),
+            Kind::Shaft { stiffness, damping } => writeln!(
+                s,
+                "kind = \"shaft\"\nstiffness = {stiffness:e}\ndamping = {damping:e}"
+            ),
+            Kind::Rubber { stiffness, psi } => writeln!(
+                s,
+                "kind = \"rubber\"\nstiffness = {stiffness:e}\npsi = {psi:e}"
+            ),
+            Kind::Gear {
+                ratio,
+                mesh_stiffness,
+                ..
+            } => writeln!(
+                s,
+                "kind = \"gear\"\nratio = {ratio}\nmesh_stiffness = {mesh_stiffness:e}"
+            ),
         };
     }
     let e = &d.engine;
@@ -71,7 +104,13 @@ pub fn model_toml(d: &Driveline, lo_rpm: f64, hi_rpm: f64) -> String {
         e.reciprocating_kg
     );
     for p in &e.pressure {
-        let _ = writeln!(s, "  {{ load = {}, crank_angle_deg = [{}], bar = [{}] }},", p.load, list(&p.angle_deg), list(&p.bar));
+        let _ = writeln!(
+            s,
+            "  {{ load = {}, crank_angle_deg = [{}], bar = [{}] }},",
+            p.load,
+            list(&p.angle_deg),
+            list(&p.bar)
+        );
     }
     let _ = write!(
         s,
@@ -91,13 +130,27 @@ fn measured_rpm(law: Option<&SensorLaw>, theta: f64, omega: f64, sample_s: f64) 
         let width = pitch.max(omega.abs() * sample_s);
         let a = (theta - at).rem_euclid(TAU);
         let extra = fraction * pitch;
-        if a < width { 1.0 / (1.0 + extra / width) } else { 1.0 + extra / TAU }
+        if a < width {
+            1.0 / (1.0 + extra / width)
+        } else {
+            1.0 + extra / TAU
+        }
     };
     let factor = match law {
         None => 1.0,
-        Some(SensorLaw::Eccentricity { e_rad, phase_rad }) => 1.0 + e_rad * (theta + phase_rad).cos(),
-        Some(SensorLaw::TapeJoint { fraction, lines, angle_rad }) => pulse(*fraction, *lines, *angle_rad),
-        Some(SensorLaw::MissingTooth { fraction, lines, angle_rad }) => pulse(*fraction, *lines, *angle_rad),
+        Some(SensorLaw::Eccentricity { e_rad, phase_rad }) => {
+            1.0 + e_rad * (theta + phase_rad).cos()
+        }
+        Some(SensorLaw::TapeJoint {
+            fraction,
+            lines,
+            angle_rad,
+        }) => pulse(*fraction, *lines, *angle_rad),
+        Some(SensorLaw::MissingTooth {
+            fraction,
+            lines,
+            angle_rad,
+        }) => pulse(*fraction, *lines, *angle_rad),
     };
     rpm * factor
 }
@@ -112,7 +165,11 @@ fn write_recording(case: &Case, idx: usize, dir: &Path) -> Result<PathBuf, Write
         Effect::SensorArtifact { station, law } => Some((*station, *law)),
         _ => None,
     };
-    let names: Vec<&str> = c.stations.iter().map(|s| case.truth.nodes[s.node].name.as_str()).collect();
+    let names: Vec<&str> = c
+        .stations
+        .iter()
+        .map(|s| case.truth.nodes[s.node].name.as_str())
+        .collect();
     let mut csv = String::from("time_s");
     for n in &names {
         let _ = write!(csv, ",{n}_rpm");
@@ -124,7 +181,8 @@ fn write_recording(case: &Case, idx: usize, dir: &Path) -> Result<PathBuf, Write
         let _ = write!(csv, "{:.6}", c.clock_start_s + t);
         for (k, s) in c.stations.iter().enumerate() {
             let law = artifact.as_ref().filter(|(st, _)| *st == k).map(|(_, l)| l);
-            let v = measured_rpm(law, y[s.node], y[n_nodes + s.node], sample_s) + c.noise_rpm * rng.normal();
+            let v = measured_rpm(law, y[s.node], y[n_nodes + s.node], sample_s)
+                + c.noise_rpm * rng.normal();
             let _ = write!(csv, ",{v:.3}");
         }
         csv.push('\n');
@@ -142,7 +200,11 @@ fn write_recording(case: &Case, idx: usize, dir: &Path) -> Result<PathBuf, Write
         let _ = writeln!(side, "speed_rpm = {}", rec.from_rpm);
     }
     for s in &c.stations {
-        let _ = write!(side, "\n[sensors.{}]\nkind = \"{}\"\nlines_per_rev = {}\n", case.truth.nodes[s.node].name, s.kind, s.lines);
+        let _ = write!(
+            side,
+            "\n[sensors.{}]\nkind = \"{}\"\nlines_per_rev = {}\n",
+            case.truth.nodes[s.node].name, s.kind, s.lines
+        );
     }
     put(&dir.join(format!("{}.toml", rec.stem)), &side)?;
     Ok(csv_path)
@@ -152,13 +214,21 @@ fn write_recording(case: &Case, idx: usize, dir: &Path) -> Result<PathBuf, Write
 fn truth_toml(case: &Case) -> String {
     let mut s = format!(
         "# The truth of this benchtruth case; torsim never reads it.\nformat = 1\nseed = {}\neffect = \"{}\"\nform = \"{}\"\nfirst_mode_damping = {}\nmodes_hz = [{}]\n",
-        case.seed, case.class, case.form, case.zeta1, list(&case.modes_hz)
+        case.seed,
+        case.class,
+        case.form,
+        case.zeta1,
+        list(&case.modes_hz)
     );
     if let Some((key, ok)) = &case.place {
         let q: Vec<String> = ok.iter().map(|v| format!("\"{v}\"")).collect();
         let _ = writeln!(s, "place_key = \"{key}\"\nplace = [{}]", q.join(", "));
     }
-    let _ = writeln!(s, "effect_detail = \"{}\"", format!("{:?}", case.effect).replace('"', "'"));
+    let _ = writeln!(
+        s,
+        "effect_detail = \"{}\"",
+        format!("{:?}", case.effect).replace('"', "'")
+    );
     s.push_str("\n[parameters]\n");
     for (k, v) in &case.params {
         let _ = writeln!(s, "{k} = {v}");
@@ -179,9 +249,22 @@ fn truth_toml(case: &Case) -> String {
 /// Draws the case of `seed` (class forced or `seed mod 11`) and writes it into `dir`.
 pub fn write_case(seed: u64, class: Option<&str>, dir: &Path) -> Result<CaseFiles, WriteError> {
     let case = draw_case(seed, class).map_err(WriteError::Draw)?;
-    std::fs::create_dir_all(dir).map_err(|source| WriteError::Io { path: dir.to_path_buf(), source })?;
-    let lo = case.campaign.recordings.iter().map(|r| r.from_rpm.min(r.to_rpm)).fold(f64::INFINITY, f64::min);
-    let hi = case.campaign.recordings.iter().map(|r| r.from_rpm.max(r.to_rpm)).fold(0.0, f64::max);
+    std::fs::create_dir_all(dir).map_err(|source| WriteError::Io {
+        path: dir.to_path_buf(),
+        source,
+    })?;
+    let lo = case
+        .campaign
+        .recordings
+        .iter()
+        .map(|r| r.from_rpm.min(r.to_rpm))
+        .fold(f64::INFINITY, f64::min);
+    let hi = case
+        .campaign
+        .recordings
+        .iter()
+        .map(|r| r.from_rpm.max(r.to_rpm))
+        .fold(0.0, f64::max);
     let model = dir.join("model.toml");
     put(&model, &model_toml(&case.user, lo, hi))?;
     let results: Vec<Result<PathBuf, WriteError>> = std::thread::scope(|s| {
@@ -191,10 +274,24 @@ pub fn write_case(seed: u64, class: Option<&str>, dir: &Path) -> Result<CaseFile
                 s.spawn(move || write_recording(case, i, dir))
             })
             .collect();
-        handles.into_iter().map(|h| h.join().unwrap_or_else(|_| Err(WriteError::Draw("a simulation thread panicked".into())))).collect()
+        handles
+            .into_iter()
+            .map(|h| {
+                h.join().unwrap_or_else(|_| {
+                    Err(WriteError::Draw("a simulation thread panicked".into()))
+                })
+            })
+            .collect()
     });
     let recordings = results.into_iter().collect::<Result<Vec<_>, _>>()?;
     let truth = dir.join("truth.toml");
     put(&truth, &truth_toml(&case))?;
-    Ok(CaseFiles { model, recordings, truth, class: case.class.clone(), form: case.form.clone(), place: case.place.clone() })
+    Ok(CaseFiles {
+        model,
+        recordings,
+        truth,
+        class: case.class.clone(),
+        form: case.form.clone(),
+        place: case.place.clone(),
+    })
 }
