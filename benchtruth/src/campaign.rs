@@ -32,7 +32,10 @@ pub struct Campaign {
     pub rate_hz: f64,
     pub stations: Vec<Station>,
     pub noise_rpm: f64,
+    /// Relative amplitude of the slow wobble of the held speed, 0.02–0.1 % (a bench
+    /// dyno holds its speed within 0.1 %; the sidecar's `speed_rpm` is the set speed).
     pub wobble: f64,
+    /// Period of the wobble, s.
     pub wobble_period_s: f64,
     /// The DAQ clock at the first sample, s (0 or a running clock such as 187.6 s).
     pub clock_start_s: f64,
@@ -143,7 +146,7 @@ pub fn draw(rng: &mut Rng, needs: &Needs) -> Campaign {
         rate_hz,
         stations,
         noise_rpm: rng.log_range(0.05, 0.5),
-        wobble: rng.log_range(5e-4, 3e-3),
+        wobble: rng.log_range(2e-4, 1e-3),
         wobble_period_s: rng.range(3.0, 10.0),
         clock_start_s: if rng.chance(0.5) {
             (rng.range(10.0, 500.0) * 10.0).round() / 10.0
