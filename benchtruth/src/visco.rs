@@ -174,7 +174,11 @@ mod tests {
         assert_eq!(bank.at(0.0), (1.0e4, 0.0));
         for f in [20.0, 50.0, 100.0] {
             let (re, im) = bank.at(f);
-            assert!((im / 1.0e4 / xi - 1.0).abs() < 0.2, "{f} Hz loss {}", im / 1e4);
+            assert!(
+                (im / 1.0e4 / xi - 1.0).abs() < 0.2,
+                "{f} Hz loss {}",
+                im / 1e4
+            );
             assert!(re > 1.0e4, "{f} Hz storage {re}");
         }
         let rise = bank.at(100.0).0 / bank.at(20.0).0 - 1.0;
