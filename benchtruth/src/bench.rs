@@ -1,0 +1,258 @@
+//! The diagnosis benchmark (issue 14, item 4): draws cases, runs `torsim diagnose …
+//! --json` on each, scores the verdict against the truth and tabulates a confusion
+//! matrix, per-class accuracy, place right/wrong, false physics on controls, held-out fits
+//! worse than the user's model, and the time per case.
+
+use crate::effects::CLASSES;
+use crate::write::{CaseFiles, write_case};
+use serde_json::Value;
+use std::fmt::Write as _;
+use std::path::Path;
+use std::process::Command;
+use std::time::Instant;
+
+/// The score of one case.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Outcome {
+    pub truth: String,
+    pub verdict: String,
+    /// The verdict counts as right (controls: `none` or `parameter_error`).
+    pub right: bool,
+    /// Place right, wrong, or not applicable (None).
+    pub place_right: Option<bool>,
+    pub fit_before: Option<f64>,
+    pub fit_after: Option<f64>,
+}
+
+/// Scores a `torsim diagnose --json` report against the truth of `case`.
+pub fn score(case: &CaseFiles, report: &Value) -> Outcome {
+    let verdict = report["verdict"]["effect"]
+        .as_str()
+        .unwrap_or("?")
+        .to_string();
+    let control = case.class == "none" || case.class == "parameter_error";
+    let right = if control {
+        verdict == "none" || verdict == "parameter_error"
+    } else {
+        verdict == case.class
+    };
+    let place_right = match (&case.place, right) {
+        (Some((key, ok)), true) => {
+            let p = &report["verdict"]["parameters"];
+            let got = match &p[key.as_str()] {
+                Value::String(s) => Some(s.clone()),
+                Value::Number(n) => n.as_f64().map(|x| format!("{x}")),
+                _ => p["node"].as_str().map(str::to_string),
+            };
+            Some(got.is_some_and(|g| {
+                ok.iter().any(|o| {
+                    o == &g
+                        || o.parse::<f64>().ok() == g.parse::<f64>().ok()
+                            && o.parse::<f64>().is_ok()
+                })
+            }))
+        }
+        _ => None,
+    };
+    Outcome {
+        truth: case.class.clone(),
+        verdict,
+        right,
+        place_right,
+        fit_before: report["fit"]["before"].as_f64(),
+        fit_after: report["fit"]["after"].as_f64(),
+    }
+}
+
+/// One benchmark row.
+#[derive(Debug, Clone)]
+pub struct Row {
+    pub seed: u64,
+    pub form: String,
+    pub outcome: Result<Outcome, String>,
+    pub seconds: f64,
+}
+
+/// Draws and diagnoses the case of `seed` in `dir`.
+pub fn run_case(torsim: &Path, seed: u64, dir: &Path) -> Row {
+    let files = match write_case(seed, None, dir) {
+        Ok(f) => f,
+        Err(e) => {
+            return Row {
+                seed,
+                form: "?".into(),
+                outcome: Err(format!("draw: {e}")),
+                seconds: 0.0,
+            };
+        }
+    };
+    let start = Instant::now();
+    let out = Command::new(torsim)
+        .arg("diagnose")
+        .arg(&files.model)
+        .args(&files.recordings)
+        .arg("--json")
+        .output();
+    let seconds = start.elapsed().as_secs_f64();
+    let outcome = match out {
+        Err(e) => Err(format!("cannot run {}: {e}", torsim.display())),
+        Ok(o) if !o.status.success() => Err(String::from_utf8_lossy(&o.stderr)
+            .lines()
+            .last()
+            .unwrap_or("failed")
+            .to_string()),
+        Ok(o) => serde_json::from_slice::<Value>(&o.stdout)
+            .map_err(|e| format!("report is not JSON: {e}"))
+            .map(|v| score(&files, &v)),
+    };
+    Row {
+        seed,
+        form: files.form,
+        outcome,
+        seconds,
+    }
+}
+
+/// The README-ready markdown summary of `rows`.
+pub fn summary(rows: &[Row], first: u64, last: u64) -> String {
+    let mut verdicts: Vec<String> = CLASSES.iter().map(|s| s.to_string()).collect();
+    verdicts.push("error".into());
+    let mut s = format!(
+        "Seeds {first}–{last}, {} cases.\n\n| truth \\ verdict |",
+        rows.len()
+    );
+    for v in &verdicts {
+        let _ = write!(s, " {} |", abbreviate(v));
+    }
+    s.push_str(" right | place right/wrong |\n|---|");
+    for _ in 0..verdicts.len() + 2 {
+        s.push_str("---|");
+    }
+    s.push('\n');
+    let (mut right_all, mut false_physics, mut worse, mut errors) = (0, 0, 0, 0);
+    for class in CLASSES {
+        let mine: Vec<&Row> = rows.iter().filter(|r| class_of_row(r) == class).collect();
+        if mine.is_empty() {
+            continue;
+        }
+        let _ = write!(s, "| {class} |");
+        for v in &verdicts {
+            let n = mine.iter().filter(|r| verdict_of(r) == *v).count();
+            let _ = write!(
+                s,
+                " {} |",
+                if n == 0 { String::new() } else { n.to_string() }
+            );
+        }
+        let right = mine
+            .iter()
+            .filter(|r| r.outcome.as_ref().is_ok_and(|o| o.right))
+            .count();
+        right_all += right;
+        let pr = mine
+            .iter()
+            .filter(|r| {
+                r.outcome
+                    .as_ref()
+                    .is_ok_and(|o| o.place_right == Some(true))
+            })
+            .count();
+        let pw = mine
+            .iter()
+            .filter(|r| {
+                r.outcome
+                    .as_ref()
+                    .is_ok_and(|o| o.place_right == Some(false))
+            })
+            .count();
+        let _ = writeln!(s, " {right}/{} | {pr}/{pw} |", mine.len());
+        for r in &mine {
+            match &r.outcome {
+                Ok(o) => {
+                    if (class == "none" || class == "parameter_error") && !o.right {
+                        false_physics += 1;
+                    }
+                    if let (Some(b), Some(a)) = (o.fit_before, o.fit_after)
+                        && a > b
+                    {
+                        worse += 1;
+                    }
+                }
+                Err(_) => errors += 1,
+            }
+        }
+    }
+    let mut times: Vec<f64> = rows.iter().map(|r| r.seconds).collect();
+    times.sort_by(f64::total_cmp);
+    let median = times.get(times.len() / 2).copied().unwrap_or(0.0);
+    let max = times.last().copied().unwrap_or(0.0);
+    let _ = writeln!(
+        s,
+        "\nOverall right: {right_all}/{} ({:.0} %). False physics on controls: {false_physics}. Held-out fit worse than the user's model: {worse}. Errors: {errors}. Diagnosis time per case: median {median:.1} s, max {max:.1} s.",
+        rows.len(),
+        100.0 * right_all as f64 / rows.len().max(1) as f64
+    );
+    s
+}
+
+fn abbreviate(v: &str) -> String {
+    v.split('_')
+        .map(|w| w.chars().next().unwrap_or('?'))
+        .collect::<String>()
+}
+
+fn class_of_row(r: &Row) -> String {
+    match &r.outcome {
+        Ok(o) => o.truth.clone(),
+        Err(_) => crate::draw::class_of(r.seed).to_string(),
+    }
+}
+
+fn verdict_of(r: &Row) -> String {
+    match &r.outcome {
+        Ok(o) => o.verdict.clone(),
+        Err(_) => "error".into(),
+    }
+}
+
+/// `results.csv`: one row per case.
+pub fn results_csv(rows: &[Row]) -> String {
+    let mut s =
+        String::from("seed,truth,form,verdict,right,place,fit_before,fit_after,seconds,error\n");
+    for r in rows {
+        let num = |x: Option<f64>| x.map_or(String::new(), |v| format!("{v}"));
+        match &r.outcome {
+            Ok(o) => {
+                let place = match o.place_right {
+                    Some(true) => "right",
+                    Some(false) => "wrong",
+                    None => "",
+                };
+                let _ = writeln!(
+                    s,
+                    "{},{},{},{},{},{place},{},{},{:.2},",
+                    r.seed,
+                    o.truth,
+                    r.form,
+                    o.verdict,
+                    o.right,
+                    num(o.fit_before),
+                    num(o.fit_after),
+                    r.seconds
+                );
+            }
+            Err(e) => {
+                let _ = writeln!(
+                    s,
+                    "{},{},{},error,false,,,,{:.2},\"{}\"",
+                    r.seed,
+                    class_of_row(r),
+                    r.form,
+                    r.seconds,
+                    e.replace('"', "'")
+                );
+            }
+        }
+    }
+    s
+}

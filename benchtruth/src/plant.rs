@@ -1,0 +1,447 @@
+//! The truth's equations of motion: every node's absolute angle and speed in its own
+//! shaft, the rubber stages' Maxwell branches (`visco.rs`), a Dahl friction state, a
+//! rubber temperature, and the bench's speed controller at the load node. Implements
+//! [`System`] for the RK4 integrator.
+
+use crate::driveline::{Driveline, Kind};
+use crate::effects::{
+    AmplitudeLaw, BacklashLaw, CylinderLaw, Effect, FrequencyLaw, HystereticLaw, Thermal,
+};
+use crate::engine::{EngineLaw, Kinematics};
+use crate::integrate::System;
+use crate::visco::Bank;
+use std::f64::consts::TAU;
+
+/// Bandwidth of the dyno's speed loop, Hz (a bench dyno holds the mean speed slowly).
+const CONTROL_BANDWIDTH_HZ: f64 = 0.2;
+/// Corner of the low-pass on the speed error of the loop's proportional part, Hz.
+const CONTROL_FILTER_HZ: f64 = 1.0;
+
+/// A connection's law in the truth.
+#[derive(Debug, Clone)]
+enum Link {
+    Linear {
+        k: f64,
+        c: f64,
+    },
+    Visco {
+        bank: Bank,
+        amp: Option<AmplitudeLaw>,
+        thermal: Option<(Thermal, usize)>,
+        off: usize,
+    },
+    Dahl {
+        k: f64,
+        fc: f64,
+        sigma: f64,
+        off: usize,
+    },
+    Gear {
+        k: f64,
+        c: f64,
+        play: Option<BacklashLaw>,
+    },
+}
+
+/// The reference speed the bench's controller follows (engine shaft, rad/s).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Profile {
+    /// Settling time before the recording starts, s.
+    pub settle_s: f64,
+    pub from_rpm: f64,
+    pub to_rpm: f64,
+    /// Ramp (or hold) duration after settling, s.
+    pub duration_s: f64,
+    /// Slow wobble of the mean speed: relative amplitude and period.
+    pub wobble: f64,
+    pub wobble_period_s: f64,
+    pub wobble_phase: f64,
+}
+
+impl Profile {
+    /// (Ω_ref, dΩ_ref/dt) at t, rad/s.
+    pub fn at(&self, t: f64) -> (f64, f64) {
+        let rate = (self.to_rpm - self.from_rpm) / self.duration_s.max(1e-9);
+        let (rpm, drpm) = if t <= self.settle_s {
+            (self.from_rpm, 0.0)
+        } else if t >= self.settle_s + self.duration_s {
+            (self.to_rpm, 0.0)
+        } else {
+            (self.from_rpm + rate * (t - self.settle_s), rate)
+        };
+        let w = TAU / self.wobble_period_s;
+        let s = 1.0 + self.wobble * (w * t + self.wobble_phase).sin();
+        let ds = self.wobble * w * (w * t + self.wobble_phase).cos();
+        let k = TAU / 60.0;
+        (k * rpm * s, k * (drpm * s + rpm * ds))
+    }
+}
+
+/// The truth integrated for one recording.
+#[derive(Debug, Clone)]
+pub struct Plant {
+    pub n: usize,
+    inertia: Vec<f64>,
+    drag: Vec<f64>,
+    conns: Vec<(usize, usize, f64, Link)>,
+    engine: EngineLaw,
+    engine_node: usize,
+    load_node: usize,
+    load_ratio: f64,
+    kp: f64,
+    kc: f64,
+    ki: f64,
+    t_mean: f64,
+    j_ref: f64,
+    drag_ref: f64,
+    pub profile: Profile,
+    /// Length of the state vector; the controller's filtered error and integral are
+    /// the last two entries.
+    pub len: usize,
+    /// The highest relaxation rate of any branch, 1/s (for the step size).
+    pub fastest_rate: f64,
+    pub speed_ratio: Vec<f64>,
+}
+
+/// Band over which rubber laws are fitted, Hz.
+#[derive(Debug, Clone, Copy)]
+pub struct Band {
+    pub lo_hz: f64,
+    pub hi_hz: f64,
+}
+
+impl Plant {
+    /// Builds the truth of `d` with `effect` at engine `load`, following `profile`.
+    pub fn new(d: &Driveline, effect: &Effect, load: f64, profile: Profile, band: Band) -> Self {
+        let n = d.nodes.len();
+        let mut off = 2 * n;
+        let mut conns = Vec::new();
+        let mut fastest: f64 = 0.0;
+        for (i, c) in d.connections.iter().enumerate() {
+            let link = match c.kind {
+                Kind::Shaft { stiffness, damping } => Link::Linear {
+                    k: stiffness,
+                    c: damping,
+                },
+                Kind::Gear {
+                    mesh_stiffness,
+                    mesh_damping,
+                    ..
+                } => Link::Gear {
+                    k: mesh_stiffness,
+                    c: mesh_damping,
+                    play: match effect {
+                        Effect::GearBacklash { conn, law } if *conn == i => Some(*law),
+                        _ => None,
+                    },
+                },
+                Kind::Rubber { stiffness, psi } => {
+                    let xi = psi / TAU;
+                    match effect {
+                        Effect::Hysteretic {
+                            conn,
+                            law:
+                                HystereticLaw::Dahl {
+                                    f_c_nm,
+                                    sigma_nm_per_rad,
+                                },
+                        } if *conn == i => {
+                            let l = Link::Dahl {
+                                k: stiffness,
+                                fc: *f_c_nm,
+                                sigma: *sigma_nm_per_rad,
+                                off,
+                            };
+                            off += 1;
+                            l
+                        }
+                        _ => {
+                            let bank = match effect {
+                                Effect::FrequencyDependence { conn, law } if *conn == i => {
+                                    Bank::fit(
+                                        |f| frequency_target(law, stiffness, xi, f),
+                                        None,
+                                        band.lo_hz,
+                                        band.hi_hz,
+                                    )
+                                }
+                                _ => Bank::fit(
+                                    |_| (stiffness, stiffness * xi),
+                                    Some(stiffness),
+                                    band.lo_hz,
+                                    band.hi_hz,
+                                ),
+                            };
+                            fastest = bank.rate.iter().fold(fastest, |a, &b| a.max(b));
+                            let amp = match effect {
+                                Effect::AmplitudeNonlinearity { conn, law } if *conn == i => {
+                                    Some(*law)
+                                }
+                                _ => None,
+                            };
+                            let nb = bank.k.len();
+                            let thermal = match effect {
+                                Effect::ThermalDrift { conn, law } if *conn == i => {
+                                    Some((*law, off + nb))
+                                }
+                                _ => None,
+                            };
+                            let l = Link::Visco {
+                                bank,
+                                amp,
+                                thermal,
+                                off,
+                            };
+                            off += nb + thermal.is_some() as usize;
+                            l
+                        }
+                    }
+                }
+            };
+            conns.push((c.from, c.to, c.lever(), link));
+        }
+        let kin = match effect {
+            Effect::CrankVariableInertia { exact: true } => Kinematics::Exact,
+            _ => Kinematics::FirstOrder,
+        };
+        let mut engine = EngineLaw::new(&d.engine, load, kin);
+        if let Effect::CylinderImbalance { cylinder, law } = effect {
+            let healthy = engine.pressure_pa[*cylinder].clone();
+            engine.pressure_pa[*cylinder] = unequal_cylinder(&healthy, law);
+        }
+        let speed_ratio = d.speed_ratios();
+        let j_ref: f64 = (0..n)
+            .map(|i| d.nodes[i].inertia_kg_m2 * speed_ratio[i].powi(2))
+            .sum();
+        let load_ratio = speed_ratio[d.load_node];
+        let j_load = j_ref / load_ratio.powi(2);
+        let kp = d.load_damping_nm_s;
+        // The dyno's own speed loop, independent of the drawn load damping (which is the
+        // `[load] damping` the model file declares): bandwidth 0.2 Hz, its proportional
+        // part on the speed error low-passed at 1 Hz so that at the driveline's modes
+        // (≥ 5 Hz) it is a spring to the reference of (c·a + k_i) ≈ 12.6·J_load rad²/s²,
+        // under 0.4 % of the load's inertia force J_load·ω² at 10 Hz. Closed loop (J_load
+        // alone): s³ + 6.3 s² + 12.6 s + 9.9, poles −3.4 and −1.4 ± 1.0i (settles in ~3 s).
+        let wn = TAU * CONTROL_BANDWIDTH_HZ;
+        let t_mean = engine.mean_torque();
+        Plant {
+            n,
+            inertia: d.nodes.iter().map(|x| x.inertia_kg_m2).collect(),
+            drag: d.nodes.iter().map(|x| x.damping_nm_s).collect(),
+            conns,
+            engine,
+            engine_node: d.engine.node,
+            load_node: d.load_node,
+            load_ratio,
+            kp,
+            kc: 1.4 * j_load * wn,
+            ki: j_load * wn * wn,
+            t_mean,
+            j_ref,
+            drag_ref: (0..n)
+                .map(|i| d.nodes[i].damping_nm_s * speed_ratio[i].powi(2))
+                .sum(),
+            profile,
+            len: off + 2,
+            fastest_rate: fastest,
+            speed_ratio,
+        }
+    }
+
+    /// Rotor state at t = 0: every node at its share of the reference speed, twisted by
+    /// the mean torque only through the controller (the settling time takes the rest).
+    pub fn initial_state(&self) -> Vec<f64> {
+        let mut y = vec![0.0; self.len];
+        let (w, _) = self.profile.at(0.0);
+        for i in 0..self.n {
+            y[self.n + i] = w * self.speed_ratio[i];
+        }
+        y
+    }
+
+    /// Mean engine torque at this load, N·m.
+    pub fn mean_torque(&self) -> f64 {
+        self.t_mean
+    }
+
+    /// Power dissipated in the rubber branches and friction at state `y`, W (for sizing).
+    pub fn rubber_loss_w(&self, y: &[f64]) -> f64 {
+        let mut dy = vec![0.0; self.len];
+        self.derivative(0.0, y, &mut dy);
+        let mut p = 0.0;
+        for (from, to, g, link) in &self.conns {
+            let d = g * y[*from] - y[*to];
+            if let Link::Visco { bank, off, .. } = link {
+                for (j, k) in bank.k.iter().enumerate() {
+                    p += k * (d - y[off + j]) * dy[off + j];
+                }
+            }
+            if let Link::Dahl { off, .. } = link {
+                p += y[*off] * (g * y[self.n + from] - y[self.n + to]);
+            }
+        }
+        p
+    }
+}
+
+/// The target complex stiffness of a frequency-dependent rubber at `f` Hz.
+fn frequency_target(law: &FrequencyLaw, k: f64, xi: f64, f: f64) -> (f64, f64) {
+    match *law {
+        FrequencyLaw::PowerLaw { n, f0_hz } => {
+            // A causal power law carries the loss factor tan(nπ/2) (Kramers–Kronig); the
+            // rubber's own ψ is kept if larger.
+            let s = k * (f / f0_hz).powf(n);
+            (s, s * xi.max((n * std::f64::consts::FRAC_PI_2).tan()))
+        }
+        FrequencyLaw::FractionalZener {
+            delta,
+            alpha,
+            f_relax_hz,
+            f0_hz,
+        } => {
+            let z = |f: f64| {
+                // (iωτ)^α = x^α·(cos(απ/2) + i sin(απ/2)), x = f/f_relax
+                let x = (f / f_relax_hz).powf(alpha);
+                let (c, s) = (
+                    (alpha * std::f64::consts::FRAC_PI_2).cos(),
+                    (alpha * std::f64::consts::FRAC_PI_2).sin(),
+                );
+                let (nr, ni) = (x * c, x * s);
+                let (dr, di) = (1.0 + nr, ni);
+                let m = dr * dr + di * di;
+                (
+                    1.0 + delta * (nr * dr + ni * di) / m,
+                    delta * (ni * dr - nr * di) / m,
+                )
+            };
+            let (r0, _) = z(f0_hz);
+            let (r, i) = z(f);
+            (k * r / r0, k * (i / r0 + xi * r / r0))
+        }
+    }
+}
+
+/// One cylinder's pressure table after its deviation (1° steps, −360…360°).
+pub fn unequal_cylinder(p: &[f64], law: &CylinderLaw) -> Vec<f64> {
+    // The motored curve: the compression half (−360…0°) mirrored about TDC.
+    let motored: Vec<f64> = (0..=720)
+        .map(|i| if i <= 360 { p[i] } else { p[720 - i] })
+        .collect();
+    match *law {
+        CylinderLaw::Scale { scale } => p.iter().map(|x| x * scale).collect(),
+        CylinderLaw::Misfire { residual } => (0..=720)
+            .map(|i| motored[i] + residual * (p[i] - motored[i]))
+            .collect(),
+        CylinderLaw::Late { delay_deg, scale } => (0..=720)
+            .map(|i| {
+                let src = i as f64 - delay_deg;
+                let j = src.floor().clamp(0.0, 719.0) as usize;
+                let t = (src - j as f64).clamp(0.0, 1.0);
+                let excess = |k: usize| p[k] - motored[k];
+                motored[i] + scale * (excess(j) + t * (excess(j + 1) - excess(j)))
+            })
+            .collect(),
+    }
+}
+
+impl System for Plant {
+    fn derivative(&self, t: f64, y: &[f64], dy: &mut [f64]) {
+        let n = self.n;
+        let mut torque = vec![0.0; n];
+        for i in 0..n {
+            dy[i] = y[n + i];
+            torque[i] = -self.drag[i] * y[n + i];
+        }
+        for (from, to, g, link) in &self.conns {
+            let d = g * y[*from] - y[*to];
+            let dd = g * y[n + from] - y[n + to];
+            let tq = match link {
+                Link::Linear { k, c } => k * d + c * dd,
+                Link::Gear { k, c, play } => {
+                    let s = play.map_or(d, |p| p.deflection(d));
+                    k * s + c * dd
+                }
+                Link::Dahl { k, fc, sigma, off } => {
+                    let f = y[*off];
+                    dy[*off] = sigma * dd * (1.0 - f / fc * dd.signum());
+                    k * d + f
+                }
+                Link::Visco {
+                    bank,
+                    amp,
+                    thermal,
+                    off,
+                } => {
+                    let s = thermal.map_or(1.0, |(th, i)| th.softening.factor(y[i]));
+                    let g0 = amp.map_or(1.0, |a| a.factor(d));
+                    let mut tq = bank.k0 * g0 * d;
+                    let mut loss = 0.0;
+                    for (j, (k, l)) in bank.k.iter().zip(&bank.rate).enumerate() {
+                        let u = y[off + j];
+                        let du = l * (d - u);
+                        dy[off + j] = du;
+                        tq += k * (d - u);
+                        loss += k * (d - u) * du;
+                    }
+                    if let Some((th, i)) = thermal {
+                        dy[*i] = (s * loss - th.conductance_w_per_k * y[*i]) / th.capacity_j_per_k;
+                    }
+                    s * tq
+                }
+            };
+            torque[*to] += tq;
+            torque[*from] -= g * tq;
+        }
+        let (w_ref, dw_ref) = self.profile.at(t);
+        let e = y[n + self.load_node] - self.load_ratio * w_ref;
+        // Feed-forward: the engine's mean torque less what accelerates the line and what
+        // the nodes' drag takes, referred to the load shaft (power balance).
+        let ff = (self.t_mean - self.j_ref * dw_ref - self.drag_ref * w_ref) / self.load_ratio;
+        let e_f = y[self.len - 2];
+        torque[self.load_node] -= ff + self.kp * e + self.kc * e_f + self.ki * y[self.len - 1];
+        dy[self.len - 2] = TAU * CONTROL_FILTER_HZ * (e - e_f);
+        dy[self.len - 1] = e;
+        let en = self.engine_node;
+        let (te, jv) = self.engine.torque(y[en], y[n + en]);
+        torque[en] += te;
+        for i in 0..n {
+            let j = self.inertia[i] + if i == en { jv } else { 0.0 };
+            dy[n + i] = torque[i] / j;
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn cylinder_laws_change_only_the_combustion() {
+        let p: Vec<f64> = (0..=720)
+            .map(|i| {
+                let a = i as f64 - 360.0;
+                1e5 * (10.0 * (-(a / 60.0).powi(2)).exp()
+                    + 40.0 * (-((a - 12.0) / 14.0).powi(2)).exp())
+            })
+            .collect();
+        let scaled = unequal_cylinder(&p, &CylinderLaw::Scale { scale: 0.9 });
+        assert!((scaled[372] / p[372] - 0.9).abs() < 1e-12);
+        let mis = unequal_cylinder(&p, &CylinderLaw::Misfire { residual: 0.0 });
+        // a misfire keeps compression (before TDC) and loses the combustion bump
+        assert_eq!(mis[300], p[300]);
+        assert!(mis[372] < 0.5 * p[372]);
+        let late = unequal_cylinder(
+            &p,
+            &CylinderLaw::Late {
+                delay_deg: 6.0,
+                scale: 1.0,
+            },
+        );
+        let peak = |v: &[f64]| {
+            (360..500)
+                .max_by(|&a, &b| v[a].total_cmp(&v[b]))
+                .unwrap_or(0)
+        };
+        assert!(peak(&late) > peak(&p));
+    }
+}

@@ -1,0 +1,297 @@
+//! Writes a case as a test engineer hands it over: the user's model (model-format.md),
+//! the recordings (recording-format.md: CSV with `time_s` to the microsecond and a TOML
+//! sidecar), and `truth.toml`, which only the scorer reads. TOML is written by hand.
+
+use crate::draw::{Case, draw_case};
+use crate::driveline::{Driveline, Kind};
+use crate::effects::{Effect, SensorLaw};
+use crate::rng::Rng;
+use crate::sim;
+use std::f64::consts::TAU;
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+
+/// Errors of the writer.
+#[derive(Debug, thiserror::Error)]
+pub enum WriteError {
+    #[error("{0}")]
+    Draw(String),
+    #[error("writing {path}: {source}")]
+    Io {
+        path: PathBuf,
+        source: std::io::Error,
+    },
+}
+
+/// The files of a written case.
+#[derive(Debug, Clone)]
+pub struct CaseFiles {
+    pub model: PathBuf,
+    pub recordings: Vec<PathBuf>,
+    pub truth: PathBuf,
+    /// The truth's class (spec effect name), form and place for scoring.
+    pub class: String,
+    pub form: String,
+    pub place: Option<(String, Vec<String>)>,
+}
+
+fn put(path: &Path, text: &str) -> Result<(), WriteError> {
+    std::fs::write(path, text).map_err(|source| WriteError::Io {
+        path: path.to_path_buf(),
+        source,
+    })
+}
+
+fn list(xs: &[f64]) -> String {
+    xs.iter()
+        .map(|x| format!("{x}"))
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+/// The model file of `d` (spec model-format.md).
+pub fn model_toml(d: &Driveline, lo_rpm: f64, hi_rpm: f64) -> String {
+    let mut s = format!(
+        "format = 1\nname = \"{}\"\ndescription = \"Written by benchtruth from the bench's nominal data.\"\n",
+        d.name
+    );
+    for n in &d.nodes {
+        let _ = write!(
+            s,
+            "\n[[inertia]]\nname = \"{}\"\ninertia = {:e}\n",
+            n.name, n.inertia_kg_m2
+        );
+        if n.damping_nm_s > 0.0 {
+            let _ = writeln!(s, "damping = {:e}", n.damping_nm_s);
+        }
+    }
+    for c in &d.connections {
+        let (from, to) = (&d.nodes[c.from].name, &d.nodes[c.to].name);
+        let _ = write!(
+            s,
+            "\n[[connection]]\nname = \"{}\"\nfrom = \"{from}\"\nto = \"{to}\"\n",
+            c.name
+        );
+        let _ = match c.kind {
+            Kind::Shaft { stiffness, damping } => writeln!(
+                s,
+                "kind = \"shaft\"\nstiffness = {stiffness:e}\ndamping = {damping:e}"
+            ),
+            Kind::Rubber { stiffness, psi } => writeln!(
+                s,
+                "kind = \"rubber\"\nstiffness = {stiffness:e}\npsi = {psi:e}"
+            ),
+            Kind::Gear {
+                ratio,
+                mesh_stiffness,
+                ..
+            } => writeln!(
+                s,
+                "kind = \"gear\"\nratio = {ratio}\nmesh_stiffness = {mesh_stiffness:e}"
+            ),
+        };
+    }
+    let e = &d.engine;
+    let _ = write!(
+        s,
+        "\n[engine]\nat = \"{}\"\ncylinders = {}\nstrokes = 4\nfiring_angles_deg = [{}]\nbore = {}\ncrank_radius = {}\nconrod_length = {}\nreciprocating_mass = {}\npressure_by_load = [\n",
+        d.nodes[e.node].name,
+        e.firing_deg.len(),
+        list(&e.firing_deg),
+        e.bore_m,
+        e.crank_radius_m,
+        e.conrod_m,
+        e.reciprocating_kg
+    );
+    for p in &e.pressure {
+        let _ = writeln!(
+            s,
+            "  {{ load = {}, crank_angle_deg = [{}], bar = [{}] }},",
+            p.load,
+            list(&p.angle_deg),
+            list(&p.bar)
+        );
+    }
+    let _ = write!(
+        s,
+        "]\n\n[load]\nat = \"{}\"\ndamping = {:e}\n\n[operation]\nspeed_range_rpm = [{lo_rpm}, {hi_rpm}]\n",
+        d.nodes[d.load_node].name, d.load_damping_nm_s
+    );
+    s
+}
+
+/// The IAS a station reads: the shaft speed times the sensor's angle-error slope.
+fn measured_rpm(law: Option<&SensorLaw>, theta: f64, omega: f64, sample_s: f64) -> f64 {
+    let rpm = omega * 60.0 / TAU;
+    let pulse = |fraction: f64, lines: u32, at: f64| {
+        // One pitch reads `fraction` long: spread over max(pitch, one sample's angle),
+        // the other pitches compressed so the mean speed stays right.
+        let pitch = TAU / lines as f64;
+        let width = pitch.max(omega.abs() * sample_s);
+        let a = (theta - at).rem_euclid(TAU);
+        let extra = fraction * pitch;
+        if a < width {
+            1.0 / (1.0 + extra / width)
+        } else {
+            1.0 + extra / TAU
+        }
+    };
+    let factor = match law {
+        None => 1.0,
+        Some(SensorLaw::Eccentricity { e_rad, phase_rad }) => {
+            1.0 + e_rad * (theta + phase_rad).cos()
+        }
+        Some(SensorLaw::TapeJoint {
+            fraction,
+            lines,
+            angle_rad,
+        }) => pulse(*fraction, *lines, *angle_rad),
+        Some(SensorLaw::MissingTooth {
+            fraction,
+            lines,
+            angle_rad,
+        }) => pulse(*fraction, *lines, *angle_rad),
+    };
+    rpm * factor
+}
+
+/// Simulates and writes one recording (CSV + sidecar); returns the CSV path.
+fn write_recording(case: &Case, idx: usize, dir: &Path) -> Result<PathBuf, WriteError> {
+    let rec = &case.campaign.recordings[idx];
+    let c = &case.campaign;
+    let plant = sim::plant_for(case, rec);
+    let mut rng = Rng::new(case.seed, 100 + idx as u64);
+    let artifact = match &case.effect {
+        Effect::SensorArtifact { station, law } => Some((*station, *law)),
+        _ => None,
+    };
+    let names: Vec<&str> = c
+        .stations
+        .iter()
+        .map(|s| case.truth.nodes[s.node].name.as_str())
+        .collect();
+    let mut csv = String::from("time_s");
+    for n in &names {
+        let _ = write!(csv, ",{n}_rpm");
+    }
+    csv.push('\n');
+    let sample_s = 1.0 / c.rate_hz;
+    let n_nodes = plant.n;
+    sim::run(&case.truth, &plant, c.rate_hz, |t, y| {
+        let _ = write!(csv, "{:.6}", c.clock_start_s + t);
+        for (k, s) in c.stations.iter().enumerate() {
+            let law = artifact.as_ref().filter(|(st, _)| *st == k).map(|(_, l)| l);
+            let v = measured_rpm(law, y[s.node], y[n_nodes + s.node], sample_s)
+                + c.noise_rpm * rng.normal();
+            let _ = write!(csv, ",{v:.3}");
+        }
+        csv.push('\n');
+    });
+    let csv_path = dir.join(format!("{}.csv", rec.stem));
+    put(&csv_path, &csv)?;
+    let mut side = format!(
+        "format = 1\nkind = \"{}\"\nreference = \"{}\"\nload = {}\nlabel = \"{}\"\n",
+        if rec.run_up { "run-up" } else { "steady" },
+        case.truth.nodes[case.truth.engine.node].name,
+        rec.load,
+        rec.label
+    );
+    if !rec.run_up {
+        let _ = writeln!(side, "speed_rpm = {}", rec.from_rpm);
+    }
+    for s in &c.stations {
+        let _ = write!(
+            side,
+            "\n[sensors.{}]\nkind = \"{}\"\nlines_per_rev = {}\n",
+            case.truth.nodes[s.node].name, s.kind, s.lines
+        );
+    }
+    put(&dir.join(format!("{}.toml", rec.stem)), &side)?;
+    Ok(csv_path)
+}
+
+/// `truth.toml`: effect, form, parameters, place, errors, campaign, seed.
+fn truth_toml(case: &Case) -> String {
+    let mut s = format!(
+        "# The truth of this benchtruth case; torsim never reads it.\nformat = 1\nseed = {}\neffect = \"{}\"\nform = \"{}\"\nfirst_mode_damping = {}\nmodes_hz = [{}]\n",
+        case.seed,
+        case.class,
+        case.form,
+        case.zeta1,
+        list(&case.modes_hz)
+    );
+    if let Some((key, ok)) = &case.place {
+        let q: Vec<String> = ok.iter().map(|v| format!("\"{v}\"")).collect();
+        let _ = writeln!(s, "place_key = \"{key}\"\nplace = [{}]", q.join(", "));
+    }
+    let _ = writeln!(
+        s,
+        "effect_detail = \"{}\"",
+        format!("{:?}", case.effect).replace('"', "'")
+    );
+    s.push_str("\n[parameters]\n");
+    for (k, v) in &case.params {
+        let _ = writeln!(s, "{k} = {v}");
+    }
+    s.push_str("\n[parameter_errors]\n");
+    for (k, v) in &case.errors {
+        let _ = writeln!(s, "\"{k}\" = {v}");
+    }
+    let c = &case.campaign;
+    let _ = writeln!(
+        s,
+        "\n[measurement]\nrate_hz = {}\nnoise_rpm = {}\nwobble = {}\nwobble_period_s = {}\nclock_start_s = {}",
+        c.rate_hz, c.noise_rpm, c.wobble, c.wobble_period_s, c.clock_start_s
+    );
+    s
+}
+
+/// Draws the case of `seed` (class forced or `seed mod 11`) and writes it into `dir`.
+pub fn write_case(seed: u64, class: Option<&str>, dir: &Path) -> Result<CaseFiles, WriteError> {
+    let case = draw_case(seed, class).map_err(WriteError::Draw)?;
+    std::fs::create_dir_all(dir).map_err(|source| WriteError::Io {
+        path: dir.to_path_buf(),
+        source,
+    })?;
+    let lo = case
+        .campaign
+        .recordings
+        .iter()
+        .map(|r| r.from_rpm.min(r.to_rpm))
+        .fold(f64::INFINITY, f64::min);
+    let hi = case
+        .campaign
+        .recordings
+        .iter()
+        .map(|r| r.from_rpm.max(r.to_rpm))
+        .fold(0.0, f64::max);
+    let model = dir.join("model.toml");
+    put(&model, &model_toml(&case.user, lo, hi))?;
+    let results: Vec<Result<PathBuf, WriteError>> = std::thread::scope(|s| {
+        let handles: Vec<_> = (0..case.campaign.recordings.len())
+            .map(|i| {
+                let case = &case;
+                s.spawn(move || write_recording(case, i, dir))
+            })
+            .collect();
+        handles
+            .into_iter()
+            .map(|h| {
+                h.join().unwrap_or_else(|_| {
+                    Err(WriteError::Draw("a simulation thread panicked".into()))
+                })
+            })
+            .collect()
+    });
+    let recordings = results.into_iter().collect::<Result<Vec<_>, _>>()?;
+    let truth = dir.join("truth.toml");
+    put(&truth, &truth_toml(&case))?;
+    Ok(CaseFiles {
+        model,
+        recordings,
+        truth,
+        class: case.class.clone(),
+        form: case.form.clone(),
+        place: case.place.clone(),
+    })
+}
