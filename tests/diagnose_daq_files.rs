@@ -185,7 +185,10 @@ fn daq_files_are_diagnosed_like_the_pristine_ones() {
             pristine["fit"][key].as_f64().expect("a number"),
             shifted["fit"][key].as_f64().expect("a number"),
         );
-        assert!((a - b).abs() <= tolerance * a.abs(), "fit.{key}: {a} vs {b}");
+        assert!(
+            (a - b).abs() <= tolerance * a.abs(),
+            "fit.{key}: {a} vs {b}"
+        );
     }
     let (before, after) = (
         shifted["fit"]["before"].as_f64().expect("before"),
