@@ -88,9 +88,10 @@ fn daq_sidecar(sidecar: &str, csv: &str) -> String {
         + "\n"
 }
 
-/// The case rewritten as a DAQ would export it, in a fresh folder under the target dir.
-fn daq_case() -> PathBuf {
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("daq-{CASE}"));
+/// The case rewritten as a DAQ would export it, in a fresh folder under the target dir
+/// named by `test` (the tests run in parallel, each with its own folder).
+fn daq_case(test: &str) -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("daq-{CASE}-{test}"));
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).expect("temp folder");
     std::fs::copy(case_dir().join("model.toml"), dir.join("model.toml")).expect("model");
@@ -130,7 +131,7 @@ fn recordings(dir: &Path) -> Vec<LabelledRecording> {
 /// works in sample counts.
 #[test]
 fn the_clock_offset_changes_no_order_analysis() {
-    let daq = daq_case();
+    let daq = daq_case("observe");
     let pristine = observe(&recordings(&case_dir()), 8.0).expect("pristine observed");
     let shifted = observe(&recordings(&daq), 8.0).expect("DAQ files observed");
     assert_eq!(pristine.observations.len(), shifted.observations.len());
@@ -175,7 +176,7 @@ fn diagnose_json(dir: &Path) -> serde_json::Value {
 /// 1e-2 (measured: 1.5e-3).
 #[test]
 fn daq_files_are_diagnosed_like_the_pristine_ones() {
-    let daq = daq_case();
+    let daq = daq_case("diagnose");
     let pristine = diagnose_json(&case_dir());
     let shifted = diagnose_json(&daq);
     assert_eq!(pristine["verdict"]["effect"], CASE);
