@@ -177,16 +177,29 @@ fn write_recording(case: &Case, idx: usize, dir: &Path) -> Result<PathBuf, Write
     csv.push('\n');
     let sample_s = 1.0 / c.rate_hz;
     let n_nodes = plant.n;
+    // The first time at which the truth is no longer finite: a bench never writes NaN
+    // (a diverged truth is the bench's failure, reported as such, not torsim's).
+    let mut diverged_s: Option<f64> = None;
     sim::run(&case.truth, &plant, c.rate_hz, |t, y| {
         let _ = write!(csv, "{:.6}", c.clock_start_s + t);
         for (k, s) in c.stations.iter().enumerate() {
             let law = artifact.as_ref().filter(|(st, _)| *st == k).map(|(_, l)| l);
             let v = measured_rpm(law, y[s.node], y[n_nodes + s.node], sample_s)
                 + c.noise_rpm * rng.normal();
+            if !v.is_finite() && diverged_s.is_none() {
+                diverged_s = Some(t);
+            }
             let _ = write!(csv, ",{v:.3}");
         }
         csv.push('\n');
     });
+    if let Some(t) = diverged_s {
+        return Err(WriteError::Draw(format!(
+            "seed {}: the bench's truth diverged in `{}` at {t:.4} s ({} form): the case is not usable \
+             and counts as a bench error",
+            case.seed, rec.stem, case.form
+        )));
+    }
     let csv_path = dir.join(format!("{}.csv", rec.stem));
     put(&csv_path, &csv)?;
     let mut side = format!(
