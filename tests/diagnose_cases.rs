@@ -3,10 +3,11 @@
 //! nothing else; the test then reads the truth the generator wrote beside them and checks
 //! that the verdict names it and that the fit improves on the held-out recordings.
 
+mod diagnosis_inputs;
+
 use std::path::{Path, PathBuf};
 use torsim::diagnose::{DiagnoseOptions, LabelledRecording, Report, diagnose};
-use torsim::model::{Model, parse_model};
-use torsim::recording::read_recording;
+use torsim::model::Model;
 
 fn case_dir(case: &str) -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR"))
@@ -16,28 +17,7 @@ fn case_dir(case: &str) -> PathBuf {
 
 /// The user's model and the recordings, as `torsim diagnose` would read them.
 fn inputs(case: &str) -> (Model, Vec<LabelledRecording>) {
-    let dir = case_dir(case);
-    let text = std::fs::read_to_string(dir.join("model.toml")).expect("model.toml");
-    let model = parse_model(&text, "model.toml").expect("the user's model parses");
-    let nodes: Vec<String> = model.inertias.iter().map(|n| n.name.clone()).collect();
-    let mut csv: Vec<PathBuf> = std::fs::read_dir(&dir)
-        .expect("case folder")
-        .filter_map(|e| e.ok().map(|e| e.path()))
-        .filter(|p| p.extension().is_some_and(|x| x == "csv"))
-        .collect();
-    csv.sort();
-    let recordings = csv
-        .iter()
-        .map(|p| {
-            let recording = read_recording(p, Some(&nodes)).expect("recording reads");
-            let label = recording.meta.label.clone().unwrap_or_else(|| {
-                p.file_stem()
-                    .map_or(String::new(), |s| s.to_string_lossy().into())
-            });
-            LabelledRecording { label, recording }
-        })
-        .collect();
-    (model, recordings)
+    diagnosis_inputs::inputs(&case_dir(case))
 }
 
 /// The truth's effect name, from `truth.toml` (only tests read it).

@@ -4,12 +4,14 @@
 //! order analysis and, through `torsim diagnose`, the same verdict and held-out fit as
 //! the pristine files.
 
+mod diagnosis_inputs;
+
+use diagnosis_inputs::csv_files;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 use torsim::diagnose::LabelledRecording;
 use torsim::diagnose::observe::observe;
-use torsim::model::parse_model;
-use torsim::recording::{CsvCheck, read_recording};
+use torsim::recording::CsvCheck;
 
 /// The case: quick (4 s in a release build) and its verdict an effect, not `none`.
 const CASE: &str = "cylinder_imbalance";
@@ -20,16 +22,6 @@ fn case_dir() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("tests/data/diagnosis")
         .join(CASE)
-}
-
-fn csv_files(dir: &Path) -> Vec<PathBuf> {
-    let mut csv: Vec<PathBuf> = std::fs::read_dir(dir)
-        .expect("case folder")
-        .filter_map(|e| e.ok().map(|e| e.path()))
-        .filter(|p| p.extension().is_some_and(|x| x == "csv"))
-        .collect();
-    csv.sort();
-    csv
 }
 
 /// `csv` with its `time_s` column shifted by [`CLOCK_START_S`] and printed to 6 decimals.
@@ -110,18 +102,7 @@ fn daq_case(test: &str) -> PathBuf {
 }
 
 fn recordings(dir: &Path) -> Vec<LabelledRecording> {
-    let text = std::fs::read_to_string(dir.join("model.toml")).expect("model.toml");
-    let model = parse_model(&text, "model.toml").expect("the model parses");
-    let nodes: Vec<String> = model.inertias.iter().map(|n| n.name.clone()).collect();
-    csv_files(dir)
-        .iter()
-        .map(|p| {
-            let recording = read_recording(p, Some(&nodes))
-                .unwrap_or_else(|e| panic!("{} reads: {e}", p.display()));
-            let label = recording.meta.label.clone().unwrap_or_default();
-            LabelledRecording { label, recording }
-        })
-        .collect()
+    diagnosis_inputs::inputs(dir).1
 }
 
 /// The clock offset and the microsecond printing change no order amplitude and no
