@@ -18,10 +18,42 @@ pub struct Outcome {
     pub verdict: String,
     /// The verdict counts as right (controls: `none` or `parameter_error`).
     pub right: bool,
-    /// Place right, wrong, or not applicable (None).
-    pub place_right: Option<bool>,
+    /// Where the effect sits, when the class has a place and the verdict is right.
+    pub place: Option<Place>,
     pub fit_before: Option<f64>,
     pub fit_after: Option<f64>,
+}
+
+/// How the verdict's place compares with the truth's.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Place {
+    /// The named place is the truth's.
+    Right,
+    /// The named place is another, and the report does not list the truth's as
+    /// indistinguishable from it.
+    Wrong,
+    /// The named place is another, but the report says the recordings cannot tell it from
+    /// the truth's (`equivalent_places`). Recordings without an angle reference carry no
+    /// phase, so e.g. every cylinder of an imbalance predicts the same amplitudes.
+    Unresolvable,
+}
+
+impl Place {
+    /// The word in `results.csv`.
+    pub fn word(self) -> &'static str {
+        match self {
+            Place::Right => "right",
+            Place::Wrong => "wrong",
+            Place::Unresolvable => "unresolvable",
+        }
+    }
+}
+
+/// Whether `got` (a place as the report prints it) is one of `ok`.
+fn is_place(ok: &[String], got: &str) -> bool {
+    ok.iter().any(|o| {
+        o == got || o.parse::<f64>().is_ok() && o.parse::<f64>().ok() == got.parse::<f64>().ok()
+    })
 }
 
 /// Scores a `torsim diagnose --json` report against the truth of `case`.
@@ -36,7 +68,7 @@ pub fn score(case: &CaseFiles, report: &Value) -> Outcome {
     } else {
         verdict == case.class
     };
-    let place_right = match (&case.place, right) {
+    let place = match (&case.place, right) {
         (Some((key, ok)), true) => {
             let p = &report["verdict"]["parameters"];
             let got = match &p[key.as_str()] {
@@ -44,13 +76,15 @@ pub fn score(case: &CaseFiles, report: &Value) -> Outcome {
                 Value::Number(n) => n.as_f64().map(|x| format!("{x}")),
                 _ => p["node"].as_str().map(str::to_string),
             };
-            Some(got.is_some_and(|g| {
-                ok.iter().any(|o| {
-                    o == &g
-                        || o.parse::<f64>().ok() == g.parse::<f64>().ok()
-                            && o.parse::<f64>().is_ok()
-                })
-            }))
+            let equivalent = report["verdict"]["equivalent_places"]
+                .as_array()
+                .map(|a| a.iter().filter_map(|v| v.as_str()).any(|g| is_place(ok, g)))
+                .unwrap_or(false);
+            Some(match got {
+                Some(g) if is_place(ok, &g) => Place::Right,
+                _ if equivalent => Place::Unresolvable,
+                _ => Place::Wrong,
+            })
         }
         _ => None,
     };
@@ -58,7 +92,7 @@ pub fn score(case: &CaseFiles, report: &Value) -> Outcome {
         truth: case.class.clone(),
         verdict,
         right,
-        place_right,
+        place,
         fit_before: report["fit"]["before"].as_f64(),
         fit_after: report["fit"]["after"].as_f64(),
     }
@@ -101,9 +135,13 @@ pub fn run_case(torsim: &Path, seed: u64, dir: &Path) -> Row {
             .last()
             .unwrap_or("failed")
             .to_string()),
-        Ok(o) => serde_json::from_slice::<Value>(&o.stdout)
-            .map_err(|e| format!("report is not JSON: {e}"))
-            .map(|v| score(&files, &v)),
+        Ok(o) => {
+            // Kept beside the case for a later look at what was confused with what.
+            let _ = std::fs::write(dir.join("report.json"), &o.stdout);
+            serde_json::from_slice::<Value>(&o.stdout)
+                .map_err(|e| format!("report is not JSON: {e}"))
+                .map(|v| score(&files, &v))
+        }
     };
     Row {
         seed,
@@ -124,7 +162,7 @@ pub fn summary(rows: &[Row], first: u64, last: u64) -> String {
     for v in &verdicts {
         let _ = write!(s, " {} |", abbreviate(v));
     }
-    s.push_str(" right | place right/wrong |\n|---|");
+    s.push_str(" right | place right/wrong/unresolvable |\n|---|");
     for _ in 0..verdicts.len() + 2 {
         s.push_str("---|");
     }
@@ -149,23 +187,17 @@ pub fn summary(rows: &[Row], first: u64, last: u64) -> String {
             .filter(|r| r.outcome.as_ref().is_ok_and(|o| o.right))
             .count();
         right_all += right;
-        let pr = mine
-            .iter()
-            .filter(|r| {
-                r.outcome
-                    .as_ref()
-                    .is_ok_and(|o| o.place_right == Some(true))
-            })
-            .count();
-        let pw = mine
-            .iter()
-            .filter(|r| {
-                r.outcome
-                    .as_ref()
-                    .is_ok_and(|o| o.place_right == Some(false))
-            })
-            .count();
-        let _ = writeln!(s, " {right}/{} | {pr}/{pw} |", mine.len());
+        let places = |want: Place| {
+            mine.iter()
+                .filter(|r| r.outcome.as_ref().is_ok_and(|o| o.place == Some(want)))
+                .count()
+        };
+        let (pr, pw, pu) = (
+            places(Place::Right),
+            places(Place::Wrong),
+            places(Place::Unresolvable),
+        );
+        let _ = writeln!(s, " {right}/{} | {pr}/{pw}/{pu} |", mine.len());
         for r in &mine {
             match &r.outcome {
                 Ok(o) => {
@@ -223,11 +255,7 @@ pub fn results_csv(rows: &[Row]) -> String {
         let num = |x: Option<f64>| x.map_or(String::new(), |v| format!("{v}"));
         match &r.outcome {
             Ok(o) => {
-                let place = match o.place_right {
-                    Some(true) => "right",
-                    Some(false) => "wrong",
-                    None => "",
-                };
+                let place = o.place.map_or("", Place::word);
                 let _ = writeln!(
                     s,
                     "{},{},{},{},{},{place},{},{},{:.2},",
