@@ -284,3 +284,47 @@ pub fn results_csv(rows: &[Row]) -> String {
     }
     s
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn imbalance_case() -> CaseFiles {
+        CaseFiles {
+            model: "m.toml".into(),
+            recordings: Vec::new(),
+            truth: "truth.toml".into(),
+            class: "cylinder_imbalance".into(),
+            form: "pressure_scale".into(),
+            place: Some(("cylinder".into(), vec!["6".into()])),
+        }
+    }
+
+    fn report(effect: &str, cylinder: &str, equivalent: &[&str]) -> Value {
+        serde_json::json!({
+            "verdict": {
+                "effect": effect,
+                "parameters": { "cylinder": cylinder, "pressure_scale": 1.19 },
+                "equivalent_places": equivalent,
+            },
+            "fit": { "before": 100.0, "after": 2.0 },
+        })
+    }
+
+    #[test]
+    fn place_is_right_wrong_or_unresolvable() {
+        let case = imbalance_case();
+        let right = score(&case, &report("cylinder_imbalance", "6", &[]));
+        assert_eq!(right.place, Some(Place::Right));
+        // Another cylinder that the report says it cannot tell from the truth's.
+        let unresolved = score(&case, &report("cylinder_imbalance", "4", &["1", "6"]));
+        assert_eq!(unresolved.place, Some(Place::Unresolvable));
+        // Another cylinder, and the truth's not among the equivalent ones.
+        let wrong = score(&case, &report("cylinder_imbalance", "4", &["1", "2"]));
+        assert_eq!(wrong.place, Some(Place::Wrong));
+        // A wrong verdict has no place to score.
+        let other = score(&case, &report("sensor_artifact", "6", &[]));
+        assert!(!other.right && other.place.is_none());
+        assert_eq!(other.fit_after, Some(2.0));
+    }
+}

@@ -2,6 +2,8 @@
 use anyhow::Result;
 use clap::{Parser, Subcommand};
 use std::path::PathBuf;
+use std::sync::Mutex;
+use std::sync::atomic::{AtomicUsize, Ordering};
 
 #[derive(Parser)]
 #[command(
@@ -35,6 +37,10 @@ enum Cmd {
         seeds: String,
         #[arg(long)]
         out: PathBuf,
+        /// Cases drawn and diagnosed at once (default 1). Above 1 the cases share the
+        /// cores, so the time per case printed is no longer that of an idle machine.
+        #[arg(long, default_value_t = 1)]
+        jobs: usize,
     },
 }
 
@@ -50,29 +56,36 @@ fn main() -> Result<()> {
                 f.recordings.len()
             );
         }
-        Cmd::Bench { torsim, seeds, out } => {
+        Cmd::Bench {
+            torsim,
+            seeds,
+            out,
+            jobs,
+        } => {
             let (a, b) = seeds
                 .split_once("..")
                 .ok_or_else(|| anyhow::anyhow!("--seeds must be A..B"))?;
             let (a, b): (u64, u64) = (a.trim().parse()?, b.trim().parse()?);
             std::fs::create_dir_all(&out)?;
-            let mut rows = Vec::new();
-            for seed in a..=b {
-                let row =
-                    benchtruth::bench::run_case(&torsim, seed, &out.join(format!("case-{seed}")));
-                match &row.outcome {
-                    Ok(o) => eprintln!(
-                        "seed {seed}: {} ({}) -> {} [{}] {:.1} s",
-                        o.truth,
-                        row.form,
-                        o.verdict,
-                        if o.right { "right" } else { "wrong" },
-                        row.seconds
-                    ),
-                    Err(e) => eprintln!("seed {seed}: error: {e}"),
+            let seeds: Vec<u64> = (a..=b).collect();
+            let next = AtomicUsize::new(0);
+            let rows = Mutex::new(Vec::new());
+            std::thread::scope(|scope| {
+                for _ in 0..jobs.max(1) {
+                    scope.spawn(|| {
+                        while let Some(&seed) = seeds.get(next.fetch_add(1, Ordering::Relaxed)) {
+                            let dir = out.join(format!("case-{seed}"));
+                            let row = benchtruth::bench::run_case(&torsim, seed, &dir);
+                            report(&row);
+                            if let Ok(mut rows) = rows.lock() {
+                                rows.push(row);
+                            }
+                        }
+                    });
                 }
-                rows.push(row);
-            }
+            });
+            let mut rows = rows.into_inner().unwrap_or_default();
+            rows.sort_by_key(|r| r.seed);
             let md = benchtruth::bench::summary(&rows, a, b);
             std::fs::write(out.join("summary.md"), &md)?;
             std::fs::write(
@@ -83,4 +96,20 @@ fn main() -> Result<()> {
         }
     }
     Ok(())
+}
+
+/// One progress line per finished case, on stderr.
+fn report(row: &benchtruth::bench::Row) {
+    match &row.outcome {
+        Ok(o) => eprintln!(
+            "seed {}: {} ({}) -> {} [{}] {:.1} s",
+            row.seed,
+            o.truth,
+            row.form,
+            o.verdict,
+            if o.right { "right" } else { "wrong" },
+            row.seconds
+        ),
+        Err(e) => eprintln!("seed {}: error: {e}", row.seed),
+    }
 }
