@@ -6,7 +6,8 @@ use criterion::{Criterion, criterion_group, criterion_main};
 use std::hint::black_box;
 use std::time::Duration;
 use torsim::model::{parse_model, presets};
-use torsim::transient::{RunKind, RunOptions, simulate};
+use torsim::recording::Run;
+use torsim::transient::{RunOptions, simulate};
 
 const LINEAR_3DOF: &str = r#"format = 1
 name = "linear three-DOF (seed 001 eq. 6 form, viscous)"
@@ -55,10 +56,7 @@ fn runs(c: &mut Criterion) {
     let linear = parse_model(LINEAR_3DOF, "linear.toml").expect("model");
     group.bench_function("linear_3dof_20s_10240hz", |b| {
         b.iter(|| {
-            let kind = RunKind::Steady {
-                speed_rpm: 3000.0,
-                duration_s: 20.0,
-            };
+            let kind = Run::steady(3000.0, 20.0);
             black_box(simulate(&linear, kind, RunOptions::default(), &mut |_| true).expect("run"))
         })
     });
@@ -66,11 +64,7 @@ fn runs(c: &mut Criterion) {
     let cng = parse_model(preset.text, "cng-genset.toml").expect("model");
     group.bench_function("cng_genset_runup_400_2000_20s", |b| {
         b.iter(|| {
-            let kind = RunKind::Ramp {
-                from_rpm: 400.0,
-                to_rpm: 2000.0,
-                duration_s: 20.0,
-            };
+            let kind = Run::ramp(400.0, 2000.0, 20.0);
             black_box(simulate(&cng, kind, RunOptions::default(), &mut |_| true).expect("run"))
         })
     });

@@ -2,7 +2,8 @@
 //! `cargo run --release --example time_runs [rtol] [explicit|implicit]`.
 use std::time::Instant;
 use torsim::model::{parse_model, presets};
-use torsim::transient::{Method, RunKind, RunOptions, simulate};
+use torsim::recording::Run;
+use torsim::transient::{Method, RunOptions, simulate};
 
 fn main() {
     let rtol: f64 = std::env::args()
@@ -14,7 +15,7 @@ fn main() {
         Some("explicit") => Method::Explicit,
         _ => Method::Auto,
     };
-    let run = |name: &str, kind: RunKind| {
+    let run = |name: &str, kind: Run| {
         let preset = presets::preset(name).expect("preset");
         let model = parse_model(preset.text, name).expect("model");
         let start = Instant::now();
@@ -37,26 +38,7 @@ fn main() {
             sim.steps
         );
     };
-    run(
-        "test-rig-70sh",
-        RunKind::Steady {
-            speed_rpm: 3000.0,
-            duration_s: 2.0,
-        },
-    );
-    run(
-        "cng-genset",
-        RunKind::Steady {
-            speed_rpm: 1500.0,
-            duration_s: 2.0,
-        },
-    );
-    run(
-        "cng-genset",
-        RunKind::Ramp {
-            from_rpm: 400.0,
-            to_rpm: 2000.0,
-            duration_s: 20.0,
-        },
-    );
+    run("test-rig-70sh", Run::steady(3000.0, 2.0));
+    run("cng-genset", Run::steady(1500.0, 2.0));
+    run("cng-genset", Run::ramp(400.0, 2000.0, 20.0));
 }

@@ -3,8 +3,9 @@
 //! nonlinear steady run and its order analysis.
 
 use crate::model::{ConnectionKind, Model};
+use crate::recording::Run;
 use crate::signal::{AnalysisOptions, SignalError, analyse_with};
-use crate::transient::{RunKind, RunOptions, TransientError, simulate, to_recording};
+use crate::transient::{RunOptions, TransientError, simulate, to_recording};
 
 /// A steady operating point to compare at.
 #[derive(Debug, Clone, PartialEq)]
@@ -85,10 +86,7 @@ pub fn compare_regimes(
     };
     let count = regimes.len().max(1) as f64;
     for (i, regime) in regimes.iter().enumerate() {
-        let kind = RunKind::Steady {
-            speed_rpm: regime.speed_rpm,
-            duration_s,
-        };
+        let kind = Run::steady(regime.speed_rpm, duration_s);
         let run_options = RunOptions {
             load: regime.load,
             ..options

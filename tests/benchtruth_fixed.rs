@@ -34,12 +34,12 @@ fn a_fixed_set_of_independent_cases_is_named_right() {
             ));
         }
         // Never worse than the user's model on the held-out data (issue 14, item 2).
-        if let (Some(before), Some(after)) = (outcome.fit_before, outcome.fit_after) {
-            if after > before {
-                failures.push(format!(
-                    "seed {seed}: held-out χ²/N {before:.3} → {after:.3}"
-                ));
-            }
+        if let (Some(before), Some(after)) = (outcome.fit_before, outcome.fit_after)
+            && after > before
+        {
+            failures.push(format!(
+                "seed {seed}: held-out χ²/N {before:.3} → {after:.3}"
+            ));
         }
         // A place the report names must be the truth's or one it says it cannot tell
         // from it.

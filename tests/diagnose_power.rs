@@ -5,9 +5,9 @@ use torsim::diagnose::power_plan::Bench;
 use torsim::diagnose::power_run::power;
 use torsim::diagnose::{DiagnoseOptions, LabelledRecording, diagnose};
 use torsim::model::{Model, parse_model, presets};
+use torsim::recording::RunShape;
 use torsim::synth::{
-    Effect, EffectSpec, Measurement, Plan, PlanDurations, PlannedKind, PlannedRun, build_truth,
-    generate,
+    Effect, EffectSpec, Measurement, Plan, PlanDurations, PlannedRun, build_truth, generate,
 };
 
 fn bench_model() -> Model {
@@ -20,7 +20,7 @@ fn small_plan() -> Plan {
     let steady = |label: &str, speed_rpm: f64, load: f64| PlannedRun {
         file: label.to_lowercase(),
         label: label.into(),
-        kind: PlannedKind::Steady { speed_rpm },
+        shape: RunShape::steady(speed_rpm, 4.0),
         duration_s: 4.0,
         load,
         rate_hz: None,

@@ -4,7 +4,8 @@
 
 use torsim::model::{parse_model, presets, to_toml_string};
 use torsim::physics::{Excitation, OperatingPoint, System};
-use torsim::transient::{RunKind, RunOptions, simulate};
+use torsim::recording::Run;
+use torsim::transient::{RunOptions, simulate};
 
 fn bench_with(line: &str) -> String {
     let text = presets::preset("diagnosis-bench").unwrap().text;
@@ -70,10 +71,7 @@ fn physics_scales_the_mean_torque_and_excites_half_orders() {
 /// cylinders have none, and the brake takes the lower mean torque (the run settles).
 #[test]
 fn time_domain_uses_the_factors() {
-    let kind = RunKind::Steady {
-        speed_rpm: 4440.0,
-        duration_s: 0.5,
-    };
+    let kind = Run::steady(4440.0, 0.5);
     let options = RunOptions {
         rate_hz: 4096.0,
         ..RunOptions::default()

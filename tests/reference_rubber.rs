@@ -141,7 +141,8 @@ fn frequency_factor_at_or_below_zero_is_found_and_refused() {
     use torsim::model::Poly;
     use torsim::model::rubber::Factor;
     use torsim::physics::PhysicsError;
-    use torsim::transient::{RunKind, RunOptions, TransientError, simulate};
+    use torsim::recording::Run;
+    use torsim::transient::{RunOptions, TransientError, simulate};
     let model = torsim::model::parse_model(FALLING_ALPHA_F, "f.toml").expect("valid model");
     let ConnectionKind::Rubber(stage) = &model.connections[0].kind else {
         panic!("rubber")
@@ -170,10 +171,7 @@ fn frequency_factor_at_or_below_zero_is_found_and_refused() {
     // The time domain refuses before fitting: 1500 rpm excites up to 24 × 25 = 600 Hz.
     let run = simulate(
         &model,
-        RunKind::Steady {
-            speed_rpm: 1500.0,
-            duration_s: 0.1,
-        },
+        Run::steady(1500.0, 0.1),
         RunOptions::default(),
         &mut |_| true,
     );

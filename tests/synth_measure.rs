@@ -6,9 +6,10 @@
 mod synth_support;
 
 use synth_support::{bench, make, perfect, rec, stations, steady, truth};
+use torsim::recording::Run;
 use torsim::signal::analyse;
 use torsim::synth::{Effect, EffectSpec, Measurement, build_truth};
-use torsim::transient::{RunKind, RunOptions, simulate, to_recording};
+use torsim::transient::{RunOptions, simulate, to_recording};
 
 fn sinc(x: f64) -> f64 {
     let a = std::f64::consts::PI * x;
@@ -20,10 +21,7 @@ const STATIONS: [(&str, f64, f64); 2] = [("engine", 360.0, 1.0), ("coupling_es",
 
 /// Orders of the direct simulation of the user's model at 4440 rpm (Regime D), 2 s.
 fn simulated_orders() -> torsim::signal::Analysis {
-    let kind = RunKind::Steady {
-        speed_rpm: 4440.0,
-        duration_s: 2.0,
-    };
+    let kind = Run::steady(4440.0, 2.0);
     let options = RunOptions {
         rate_hz: 2048.0,
         ..RunOptions::default()

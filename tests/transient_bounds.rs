@@ -7,33 +7,31 @@
 use std::process::Command;
 use torsim::model::{ConnectionKind, Model, Thermal, parse_model, presets};
 use torsim::physics::{Excitation, OperatingPoint, PhysicsError, System};
+use torsim::recording::Run;
 use torsim::response::forced_response;
 use torsim::transient::budget::state_name;
 use torsim::transient::plant::Plant;
-use torsim::transient::{Method, RunKind, RunOptions, TransientError, simulate};
+use torsim::transient::{Method, RunOptions, TransientError, simulate};
 
 fn rig() -> Model {
     let p = presets::preset("test-rig-70sh").expect("preset");
     parse_model(p.text, "test-rig-70sh").expect("model")
 }
 
-fn steady(speed_rpm: f64, duration_s: f64) -> RunKind {
-    RunKind::Steady {
-        speed_rpm,
-        duration_s,
-    }
+fn steady(speed_rpm: f64, duration_s: f64) -> Run {
+    Run::steady(speed_rpm, duration_s)
 }
 
 fn run(
     model: &Model,
-    kind: RunKind,
+    kind: Run,
     options: RunOptions,
 ) -> Result<torsim::transient::Simulation, TransientError> {
     simulate(model, kind, options, &mut |_| true)
 }
 
 /// The message of a run that must fail.
-fn error_of(kind: RunKind, options: RunOptions) -> String {
+fn error_of(kind: Run, options: RunOptions) -> String {
     match run(&rig(), kind, options) {
         Ok(_) => panic!("{kind:?} ran"),
         Err(e) => e.to_string(),
@@ -63,11 +61,7 @@ fn huge_durations_and_rates_are_refused_before_allocating() {
 #[test]
 fn speeds_beyond_the_limit_are_refused() {
     // A ramp to 1e9 rpm hung (a step of 1e-10 s); 1e6 rpm gave no order at all.
-    let ramp = RunKind::Ramp {
-        from_rpm: 1000.0,
-        to_rpm: 1e9,
-        duration_s: 1.0,
-    };
+    let ramp = Run::ramp(1000.0, 1e9, 1.0);
     let e = error_of(ramp, RunOptions::default());
     assert!(
         e.contains("to_rpm (--run-up TO) = 1e9") && e.contains("--max-speed-rpm"),

@@ -3,7 +3,8 @@
 use num_complex::Complex64;
 use std::f64::consts::TAU;
 use torsim::model::parse_model;
-use torsim::transient::{RunKind, RunOptions, simulate};
+use torsim::recording::Run;
+use torsim::transient::{RunOptions, simulate};
 
 /// A four-cylinder engine drives a load through a soft shaft (24 Hz isolation mode, well
 /// below order 2 at 5000 rpm) and a gear mesh with 0.5° of backlash. At full load the
@@ -61,16 +62,7 @@ damping = 5.0
             rate_hz: 8192.0,
             ..RunOptions::default()
         };
-        let sim = simulate(
-            &model,
-            RunKind::Steady {
-                speed_rpm: 5000.0,
-                duration_s: 0.5,
-            },
-            options,
-            &mut |_| true,
-        )
-        .unwrap();
+        let sim = simulate(&model, Run::steady(5000.0, 0.5), options, &mut |_| true).unwrap();
         let mesh = sim
             .connection_names
             .iter()
@@ -125,16 +117,7 @@ phase_deg = 0.0
         max_settle_s: 5.0,
         ..RunOptions::default()
     };
-    let sim = simulate(
-        &model,
-        RunKind::Steady {
-            speed_rpm,
-            duration_s: 40.0,
-        },
-        options,
-        &mut |_| true,
-    )
-    .unwrap();
+    let sim = simulate(&model, Run::steady(speed_rpm, 40.0), options, &mut |_| true).unwrap();
     let temps = &sim.temperature_c[0].1;
     let (t_first, t_end) = (temps[0], temps[temps.len() - 1]);
     assert!(
@@ -200,15 +183,7 @@ phase_deg = 0.0
         max_settle_s: 5.0,
         ..RunOptions::default()
     };
-    let message = match simulate(
-        &model,
-        RunKind::Steady {
-            speed_rpm: 4260.0,
-            duration_s: 5.0,
-        },
-        options,
-        &mut |_| true,
-    ) {
+    let message = match simulate(&model, Run::steady(4260.0, 5.0), options, &mut |_| true) {
         Ok(_) => panic!("the run did not diverge"),
         Err(e) => e.to_string(),
     };

@@ -3,9 +3,8 @@
 //! instantaneous power averages to the reported power loss, and `false` cancels.
 
 use torsim::model::{ConnectionKind, Thermal, parse_model, presets};
-use torsim::transient::{
-    Chunk, Event, RunKind, RunOptions, TransientError, simulate, simulate_observed,
-};
+use torsim::recording::Run;
+use torsim::transient::{Chunk, Event, RunOptions, TransientError, simulate, simulate_observed};
 
 /// The 70 Sh test rig with self-heating on its rubber stages, so every output (speeds,
 /// torques, power, temperatures) is in the chunks.
@@ -24,11 +23,7 @@ fn rig_with_thermal_rubber() -> torsim::model::Model {
     model
 }
 
-const RAMP: RunKind = RunKind::Ramp {
-    from_rpm: 1500.0,
-    to_rpm: 3000.0,
-    duration_s: 0.5,
-};
+const RAMP: Run = Run::ramp(1500.0, 3000.0, 0.5);
 
 fn options() -> RunOptions {
     RunOptions {

@@ -4,11 +4,12 @@ use num_complex::Complex64;
 use std::f64::consts::TAU;
 use torsim::model::{ConnectionKind, parse_model};
 use torsim::physics::{Excitation, OperatingPoint, System};
+use torsim::recording::Run;
 use torsim::response::forced_response;
 use torsim::transient::dopri::Dopri5;
 use torsim::transient::maxwell::{MaxwellChain, excited_band_hz};
 use torsim::transient::plant::Plant;
-use torsim::transient::{Method, RunKind, RunOptions, SpeedProfile, simulate};
+use torsim::transient::{Method, RunOptions, SpeedProfile, simulate};
 
 /// Zero-to-peak amplitude of order `q` in a steady IAS record sampled at `rate_hz` with
 /// reference speed `speed_rpm`, over a whole number of cycles (a plain DFT at one bin;
@@ -78,16 +79,7 @@ fn linear_run_matches_frequency_domain() {
         rate_hz: 4096.0,
         ..RunOptions::default()
     };
-    let sim = simulate(
-        &model,
-        RunKind::Steady {
-            speed_rpm,
-            duration_s: 2.0,
-        },
-        options,
-        &mut |_| true,
-    )
-    .unwrap();
+    let sim = simulate(&model, Run::steady(speed_rpm, 2.0), options, &mut |_| true).unwrap();
     assert!(sim.settling.converged, "{:?}", sim.settling);
     let system = System::new(&model, OperatingPoint::default()).unwrap();
     let excitation = Excitation::new(&model, &system, 1.0, &[1.0, 2.5]);
@@ -122,16 +114,7 @@ fn implicit_run_matches_frequency_domain() {
         max_settle_s: 6.0,
         ..RunOptions::default()
     };
-    let sim = simulate(
-        &model,
-        RunKind::Steady {
-            speed_rpm,
-            duration_s: 0.5,
-        },
-        options,
-        &mut |_| true,
-    )
-    .unwrap();
+    let sim = simulate(&model, Run::steady(speed_rpm, 0.5), options, &mut |_| true).unwrap();
     assert!(sim.settling.converged, "{:?}", sim.settling);
     let system = System::new(&model, OperatingPoint::default()).unwrap();
     let excitation = Excitation::new(&model, &system, 1.0, &[1.0, 2.5]);
@@ -219,16 +202,7 @@ fn rubber_1dof(viscous_above_hz: Option<f64>) -> (f64, f64, [usize; 2]) {
         viscous_above_hz,
         ..RunOptions::default()
     };
-    let sim = simulate(
-        &model,
-        RunKind::Steady {
-            speed_rpm,
-            duration_s: 2.0,
-        },
-        options,
-        &mut |_| true,
-    )
-    .unwrap();
+    let sim = simulate(&model, Run::steady(speed_rpm, 2.0), options, &mut |_| true).unwrap();
     let ConnectionKind::Rubber(stage) = &model.connections[0].kind else {
         panic!("not a rubber stage");
     };

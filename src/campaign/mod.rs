@@ -10,7 +10,7 @@ pub mod plan;
 pub mod plan_file;
 pub mod station;
 
-pub use plan::{Plan, PlanDurations, PlannedKind, PlannedRun};
+pub use plan::{Plan, PlanDurations, PlannedRun};
 pub use station::Station;
 
 /// Why a campaign plan or a station is not valid; the message names the file, run or key.

@@ -4,23 +4,7 @@
 
 use super::CampaignError;
 use crate::model::{Model, Pressure};
-
-/// The speed of one planned recording.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum PlannedKind {
-    /// Constant mean speed of the reference, rpm.
-    Steady {
-        /// Mean speed, rpm.
-        speed_rpm: f64,
-    },
-    /// A linear ramp of the reference speed, rpm.
-    RunUp {
-        /// Speed at the start of the recording, rpm.
-        from_rpm: f64,
-        /// Speed at its end, rpm.
-        to_rpm: f64,
-    },
-}
+use crate::recording::RunShape;
 
 /// One recording of the plan.
 #[derive(Debug, Clone, PartialEq)]
@@ -29,8 +13,9 @@ pub struct PlannedRun {
     pub file: String,
     /// The sidecar's label.
     pub label: String,
-    /// Steady or run-up.
-    pub kind: PlannedKind,
+    /// Steady, long run (a steady run of at least [`crate::recording::LONG_RUN_S`]) or
+    /// ramp, in the one vocabulary of runs ([`RunShape`], issue 14 item 1).
+    pub shape: RunShape,
     /// Recorded duration, s.
     pub duration_s: f64,
     /// Engine load 0..1.
@@ -122,7 +107,7 @@ impl Plan {
         let steady = |label: String, speed_rpm: f64, load: f64, duration_s: f64| PlannedRun {
             file: stem(&label),
             label,
-            kind: PlannedKind::Steady { speed_rpm },
+            shape: RunShape::steady(speed_rpm, duration_s),
             duration_s,
             load,
             rate_hz: None,
@@ -171,7 +156,7 @@ impl Plan {
         runs.push(PlannedRun {
             file: "run-up".into(),
             label: format!("Run-up {lo:.0} to {hi:.0} rpm, full load"),
-            kind: PlannedKind::RunUp {
+            shape: RunShape::Ramp {
                 from_rpm: lo.max(1.0),
                 to_rpm: hi,
             },

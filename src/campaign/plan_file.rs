@@ -20,7 +20,8 @@
 //! ```
 
 use super::CampaignError;
-use super::plan::{Plan, PlannedKind, PlannedRun};
+use super::plan::{Plan, PlannedRun};
+use crate::recording::RunShape;
 use toml_edit::{Document, Item, Table};
 
 impl Plan {
@@ -135,11 +136,10 @@ fn run(
             at("file")
         )));
     }
-    let kind = match string("kind")?.as_deref() {
-        Some("steady") => PlannedKind::Steady {
-            speed_rpm: required("speed_rpm")?,
-        },
-        Some("run-up") => PlannedKind::RunUp {
+    let duration_s = required("duration_s")?;
+    let shape = match string("kind")?.as_deref() {
+        Some("steady") => RunShape::steady(required("speed_rpm")?, duration_s),
+        Some("run-up") => RunShape::Ramp {
             from_rpm: required("from_rpm")?,
             to_rpm: required("to_rpm")?,
         },
@@ -162,8 +162,8 @@ fn run(
     Ok(PlannedRun {
         label: string("label")?.unwrap_or_else(|| file_stem.clone()),
         file: file_stem,
-        kind,
-        duration_s: required("duration_s")?,
+        shape,
+        duration_s,
         load,
         rate_hz: number("rate_hz")?,
     })

@@ -11,9 +11,10 @@ use super::progress::Progress;
 use serde_json::{Map, Value, json};
 use std::path::Path;
 use torsim::files::{OutputGuard, PreparedPair};
+use torsim::recording::Run;
 use torsim::recording::prepare_recording;
 use torsim::signal::{AnalysisOptions, analyse_with};
-use torsim::transient::{Method, RunKind, RunOptions, simulate, to_recording};
+use torsim::transient::{Method, RunOptions, simulate, to_recording};
 
 /// Options of the command.
 #[derive(Debug, clap::Args)]
@@ -61,7 +62,7 @@ pub enum MethodArg {
 }
 
 /// What to run, from the options.
-fn run_kind(a: &SimulateArgs) -> Result<RunKind, CliError> {
+fn run_kind(a: &SimulateArgs) -> Result<Run, CliError> {
     let bad = |m: String| CliError::input(anyhow::anyhow!(m));
     match (&a.run_up, a.speed_rpm) {
         (Some(spec), _) => {
@@ -78,16 +79,9 @@ fn run_kind(a: &SimulateArgs) -> Result<RunKind, CliError> {
             let duration_s = a
                 .duration_s
                 .ok_or_else(|| bad("--run-up needs --duration-s".into()))?;
-            Ok(RunKind::Ramp {
-                from_rpm: from,
-                to_rpm: to,
-                duration_s,
-            })
+            Ok(Run::ramp(from, to, duration_s))
         }
-        (None, Some(speed_rpm)) => Ok(RunKind::Steady {
-            speed_rpm,
-            duration_s: a.duration_s.unwrap_or(2.0),
-        }),
+        (None, Some(speed_rpm)) => Ok(Run::steady(speed_rpm, a.duration_s.unwrap_or(2.0))),
         (None, None) => Err(bad("give --speed-rpm N or --run-up FROM:TO".into())),
     }
 }
@@ -209,19 +203,15 @@ pub fn run(a: &SimulateArgs) -> Result<(), CliError> {
         commit(pending)?;
         return super::format::print_json(&doc);
     }
-    let label = match kind {
-        RunKind::Steady {
-            speed_rpm,
-            duration_s,
-        } => format!("{}: steady {speed_rpm} rpm, {duration_s} s", model.name),
-        RunKind::Ramp {
-            from_rpm,
-            to_rpm,
-            duration_s,
-        } => format!(
+    let [from_rpm, to_rpm] = kind.speeds_rpm();
+    let duration_s = kind.duration_s;
+    let label = if kind.is_ramp() {
+        format!(
             "{}: ramp {from_rpm} → {to_rpm} rpm in {duration_s} s",
             model.name
-        ),
+        )
+    } else {
+        format!("{}: steady {from_rpm} rpm, {duration_s} s", model.name)
     };
     let mut extra = String::new();
     for (c, w) in &sim.power_loss_w {

@@ -15,8 +15,8 @@ use torsim::files::{OutputGuard, same_file, write_atomic};
 use torsim::model::{presets, save_model_file};
 use torsim::recording::write_recording;
 use torsim::synth::{
-    EffectSpec, Measurement, Plan, PlanDurations, PlannedKind, SensorArtifact, Station, SynthError,
-    TRUTH_FILE, TRUTH_MODEL_FILE, build_truth, generate, truth_toml,
+    EffectSpec, Measurement, Plan, PlanDurations, SensorArtifact, Station, SynthError, TRUTH_FILE,
+    TRUTH_MODEL_FILE, build_truth, generate, truth_toml,
 };
 
 /// Options of the command.
@@ -195,13 +195,7 @@ pub fn run(a: &SynthArgs) -> Result<(), CliError> {
         write_recording(&r.recording, &csv).map_err(CliError::input)?;
         bytes += file_size(&csv) + file_size(&csv.with_extension("toml"));
         let run = plan.runs.iter().find(|p| p.file == r.file);
-        let what = match run.map(|p| p.kind) {
-            Some(PlannedKind::Steady { speed_rpm }) => format!("steady {speed_rpm} rpm"),
-            Some(PlannedKind::RunUp { from_rpm, to_rpm }) => {
-                format!("run-up {from_rpm} → {to_rpm} rpm")
-            }
-            None => String::new(),
-        };
+        let what = run.map_or(String::new(), |p| p.shape.describe());
         let n = r.recording.time_s.len();
         let rate = n as f64 / run.map_or(1.0, |p| p.duration_s);
         lines += &format!(

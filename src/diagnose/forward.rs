@@ -13,7 +13,7 @@ use super::settling;
 use crate::model::{ConnectionKind, Model};
 use crate::recording::{Channel, ChannelKind, Recording, RecordingMeta, RunKind as RecKind};
 use crate::signal::{Analysis, analyse_with};
-use crate::transient::{RunKind, RunOptions, simulate};
+use crate::transient::{RunOptions, simulate};
 use std::sync::Mutex;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
@@ -156,12 +156,9 @@ fn predict_run(
     let run = &observed.runs[r];
     let (speed_rpm, duration_s) =
         steady_record(model, run).ok_or("a run-up is simulated by segments")?;
-    let kind = RunKind::Steady {
-        speed_rpm,
-        duration_s,
-    };
+    let run_spec = crate::recording::Run::steady(speed_rpm, duration_s);
     let options = run_options(run, max_order, speed_rpm, decay_s);
-    let sim = simulate(model, kind, options, &mut |_| true).map_err(|e| e.to_string())?;
+    let sim = simulate(model, run_spec, options, &mut |_| true).map_err(|e| e.to_string())?;
     let rec = station_recording(&sim, run, RecKind::Steady)?;
     let analysis_opts = analysis_options(max_order);
     let analyse = |rec: &Recording| analyse_with(rec, &analysis_opts).map_err(|e| e.to_string());

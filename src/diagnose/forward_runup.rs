@@ -13,7 +13,7 @@ use super::observe_runup::bins;
 use crate::model::Model;
 use crate::recording::RunKind as RecKind;
 use crate::signal::analyse_with;
-use crate::transient::{RunKind, simulate};
+use crate::transient::simulate;
 use std::collections::BTreeMap;
 
 /// Run-ups shorter than this are one segment, s.
@@ -116,13 +116,13 @@ pub fn predict_segment(
     let lead = seg.lead_s;
     let start = seg.from_s - lead;
     let end = seg.to_s + PAD_S;
-    let kind = RunKind::Ramp {
-        from_rpm: from_rpm + slope * start,
-        to_rpm: from_rpm + slope * end,
-        duration_s: end - start,
-    };
+    let run_spec = crate::recording::Run::ramp(
+        from_rpm + slope * start,
+        from_rpm + slope * end,
+        end - start,
+    );
     let options = super::forward::run_options(run, max_order, from_rpm.max(to_rpm), seg.decay_s);
-    let sim = simulate(model, kind, options, &mut |_| true).map_err(|e| e.to_string())?;
+    let sim = simulate(model, run_spec, options, &mut |_| true).map_err(|e| e.to_string())?;
     let rec = super::forward::station_recording(&sim, run, RecKind::RunUp)?;
     let pad = PAD_S.min(lead);
     let mut rec = slice(&rec, lead - pad, lead + seg.to_s - seg.from_s + PAD_S);

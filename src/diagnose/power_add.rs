@@ -12,8 +12,9 @@ use super::power::{Analysed, analyse_candidate};
 use super::power_eval::Evaluator;
 use super::power_pairs::{PairSeparation, share};
 use super::power_plan::{Bench, planned};
-use crate::campaign::{Plan, PlannedKind, PlannedRun, Station};
+use crate::campaign::{Plan, PlannedRun, Station};
 use crate::model::Model;
+use crate::recording::RunShape;
 use serde::Serialize;
 
 /// One recommendation.
@@ -52,12 +53,12 @@ enum Extra {
 impl Extra {
     fn describe(&self) -> String {
         match self {
-            Extra::Run(r) => match r.kind {
-                PlannedKind::Steady { speed_rpm } => format!(
+            Extra::Run(r) => match r.shape {
+                RunShape::Steady { speed_rpm } | RunShape::LongRun { speed_rpm } => format!(
                     "steady regime {speed_rpm:.0} rpm, load {}, {} s",
                     r.load, r.duration_s
                 ),
-                PlannedKind::RunUp { from_rpm, to_rpm } => format!(
+                RunShape::Ramp { from_rpm, to_rpm } => format!(
                     "run-up {from_rpm:.0} → {to_rpm:.0} rpm, load {}, {} s",
                     r.load, r.duration_s
                 ),
@@ -72,10 +73,8 @@ fn menu(model: &Model, plan: &Plan, bench: &Bench) -> Vec<Extra> {
     let steady: Vec<f64> = plan
         .runs
         .iter()
-        .filter_map(|r| match r.kind {
-            PlannedKind::Steady { speed_rpm } => Some(speed_rpm),
-            PlannedKind::RunUp { .. } => None,
-        })
+        .filter(|r| !r.shape.is_ramp())
+        .map(|r| r.shape.speeds_rpm()[0])
         .collect();
     let range = model
         .operation
@@ -86,11 +85,11 @@ fn menu(model: &Model, plan: &Plan, bench: &Bench) -> Vec<Extra> {
             let hi = steady.iter().copied().fold(0.0, f64::max);
             (lo.is_finite() && hi > lo).then_some([lo, hi])
         });
-    let run = |label: String, kind, duration_s, load| {
+    let run = |label: String, shape, duration_s, load| {
         Extra::Run(PlannedRun {
             file: crate::campaign::plan::stem(&label),
             label,
-            kind,
+            shape,
             duration_s,
             load,
             rate_hz: None,
@@ -103,7 +102,7 @@ fn menu(model: &Model, plan: &Plan, bench: &Bench) -> Vec<Extra> {
             if steady.iter().all(|s| (s - v).abs() > 0.05 * v) {
                 out.push(run(
                     format!("Added {v} rpm"),
-                    PlannedKind::Steady { speed_rpm: v },
+                    RunShape::steady(v, 4.0),
                     4.0,
                     1.0,
                 ));
@@ -112,28 +111,27 @@ fn menu(model: &Model, plan: &Plan, bench: &Bench) -> Vec<Extra> {
         let mid = (0.5 * (lo + hi)).round();
         out.push(run(
             format!("Added {mid} rpm part load"),
-            PlannedKind::Steady { speed_rpm: mid },
+            RunShape::steady(mid, 4.0),
             4.0,
             0.3,
         ));
-        if plan.runs.iter().all(|r| {
-            r.duration_s < super::observe::LONG_RUN_S || matches!(r.kind, PlannedKind::RunUp { .. })
-        }) {
+        if plan
+            .runs
+            .iter()
+            .all(|r| !matches!(r.shape, RunShape::LongRun { .. }))
+        {
             out.push(run(
                 "Added long run".into(),
-                PlannedKind::Steady { speed_rpm: mid },
+                RunShape::steady(mid, 30.0),
                 30.0,
                 1.0,
             ));
         }
-        let slow = plan
-            .runs
-            .iter()
-            .any(|r| matches!(r.kind, PlannedKind::RunUp { .. }));
+        let slow = plan.runs.iter().any(|r| r.shape.is_ramp());
         let d = if slow { 120.0 } else { 60.0 };
         out.push(run(
             "Added run-up".into(),
-            PlannedKind::RunUp {
+            RunShape::Ramp {
                 from_rpm: lo.max(1.0),
                 to_rpm: hi,
             },

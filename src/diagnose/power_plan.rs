@@ -13,9 +13,9 @@
 //!   `σ_w = σ_n · √(2/N_w) · √1.5`, and `σ = σ_w / √(m/1.5)`, as
 //!   [`super::observe_runup::push_run_up`] takes it from a recording.
 
-use super::observe::{BIN_RPM, LONG_RUN_BLOCKS, LONG_RUN_S, Observation, Observed, Run, RunShape};
+use super::observe::{BIN_RPM, LONG_RUN_BLOCKS, Observation, Observed, Run, RunShape};
 use super::observe_runup::bins;
-use crate::campaign::{Plan, PlannedKind, Station};
+use crate::campaign::{Plan, Station};
 use crate::model::{Model, graph};
 
 /// STFT window of the analysis, s, and its overlap ([`crate::signal::AnalysisOptions`]).
@@ -131,16 +131,15 @@ pub fn planned(model: &Model, plan: &Plan, bench: &Bench) -> Option<Observed> {
                 }
             }
         };
-        match p.kind {
-            PlannedKind::Steady { speed_rpm } if p.duration_s >= LONG_RUN_S => {
-                run.regime = RunShape::LongRun { speed_rpm };
+        run.regime = p.shape;
+        match p.shape {
+            RunShape::LongRun { speed_rpm } => {
                 let block = p.duration_s / LONG_RUN_BLOCKS as f64;
                 for b in 0..LONG_RUN_BLOCKS {
                     push(b, speed_rpm, (b as f64 + 0.5) * block, block * rate_hz, 0.0);
                 }
             }
-            PlannedKind::Steady { speed_rpm } => {
-                run.regime = RunShape::Steady { speed_rpm };
+            RunShape::Steady { speed_rpm } => {
                 push(
                     0,
                     speed_rpm,
@@ -149,8 +148,7 @@ pub fn planned(model: &Model, plan: &Plan, bench: &Bench) -> Option<Observed> {
                     0.0,
                 );
             }
-            PlannedKind::RunUp { from_rpm, to_rpm } => {
-                run.regime = RunShape::Ramp { from_rpm, to_rpm };
+            RunShape::Ramp { from_rpm, to_rpm } => {
                 let (times, speeds) = windows(from_rpm, to_rpm, p.duration_s, rate_hz);
                 let (window_bins, bin_speeds) = bins(&speeds);
                 for (b, v) in bin_speeds.iter().enumerate() {

@@ -1,7 +1,6 @@
 //! The detectability analysis from end to end (issue 14, item 6; see [`super::power`]).
 
 use super::DiagnoseError;
-use super::observe::RunShape;
 use super::power::{PowerReport, analyse_all};
 use super::power_add::{RunSummary, recommend};
 use super::power_fisher::LAMBDA_DETECT;
@@ -48,12 +47,7 @@ pub fn power(
                 .collect();
             RunSummary {
                 label: run.label.clone(),
-                kind: match run.regime {
-                    RunShape::Steady { .. } => "steady",
-                    RunShape::LongRun { .. } => "long run",
-                    RunShape::Ramp { .. } => "run-up",
-                }
-                .into(),
+                kind: run.regime.label().into(),
                 observables: sigmas.len(),
                 sigma_rpm: [
                     sigmas

@@ -10,7 +10,7 @@ use crate::modal::{damped_modes, modes};
 use crate::model::{Model, parse_model};
 use crate::physics::{OperatingPoint, System};
 use crate::recording::{Channel, ChannelKind, Recording, RecordingMeta, RunKind as RecKind};
-use crate::transient::{RunKind, RunOptions, simulate};
+use crate::transient::{RunOptions, simulate};
 
 /// Load of the run-up: part load keeps the 0.7 % resonance's swing moderate.
 const LOAD: f64 = 0.3;
@@ -50,17 +50,13 @@ fn first_mode(model: &Model) -> (f64, f64) {
 
 /// One run of the whole ramp (settled at `from_rpm` first) as the bench's recording.
 fn truth(model: &Model, from_rpm: f64, to_rpm: f64, duration_s: f64) -> LabelledRecording {
-    let kind = RunKind::Ramp {
-        from_rpm,
-        to_rpm,
-        duration_s,
-    };
+    let run_spec = crate::recording::Run::ramp(from_rpm, to_rpm, duration_s);
     let options = RunOptions {
         load: LOAD,
         rate_hz: RATE_HZ,
         ..RunOptions::default()
     };
-    let sim = simulate(model, kind, options, &mut |_| true).unwrap();
+    let sim = simulate(model, run_spec, options, &mut |_| true).unwrap();
     assert!(sim.settling.converged, "{:?}", sim.settling);
     let mut meta = RecordingMeta::new(RecKind::RunUp, "engine");
     meta.load = LOAD;

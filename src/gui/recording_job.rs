@@ -13,9 +13,9 @@ use std::sync::Arc;
 use std::time::SystemTime;
 use torsim::model::{ConnectionKind, GROUND, Model};
 use torsim::physics::System;
-use torsim::recording::{Recording, RunShape, classify, read_recording, shape};
+use torsim::recording::Run;
+use torsim::recording::{Recording, RunShape, classify, read_recording};
 use torsim::signal::{Analysis, AnalysisOptions, analyse_with};
-use torsim::transient::RunKind;
 
 /// A recording as the traces panel shows it.
 #[derive(Debug)]
@@ -31,7 +31,7 @@ pub struct RecordingView {
     /// Spectrograms of a run-up recording.
     pub spectrograms: Option<Arc<SpectrogramSet>>,
     /// The simulated run that matches it.
-    pub regime: RunKind,
+    pub regime: Run,
     /// Relative speed across each rubber stage whose two sides were measured, rpm, named
     /// as the time traces name it: `(name, samples)`.
     pub relative: Vec<(String, Vec<f64>)>,
@@ -50,9 +50,12 @@ impl RecordingView {
             .find(|s| s.name == node)
             .map_or(0.0, |s| s.mean_speed_rpm);
         let (regime, ratio) = (self.regime, ratio.unwrap_or(1.0));
-        move |t| match regime {
-            RunKind::Steady { .. } => mean,
-            RunKind::Ramp { .. } => ratio * profile_rpm(regime, t),
+        move |t| {
+            if regime.is_ramp() {
+                ratio * profile_rpm(regime, t)
+            } else {
+                mean
+            }
         }
     }
 
@@ -203,27 +206,22 @@ pub fn max_frequency_hz(analysis: &Analysis) -> f64 {
 /// (or the reference's mean) for its duration (at most 20 s), or a linear ramp between
 /// the least-squares line's ends of the reference speed over its duration. The duration
 /// of `n` uniform samples is `n` intervals.
-pub fn regime_of(recording: &Recording) -> Result<RunKind, String> {
+pub fn regime_of(recording: &Recording) -> Result<Run, String> {
     if recording.speed_rpm(&recording.meta.reference).is_none() {
         return Err(format!("no `{}_rpm` column", recording.meta.reference));
     }
-    let duration_s = shape::duration_s(recording);
-    match classify(recording) {
-        RunShape::Steady { speed_rpm } | RunShape::LongRun { speed_rpm } => Ok(RunKind::Steady {
-            speed_rpm,
-            duration_s: duration_s.min(20.0),
-        }),
+    let run = Run::of(recording);
+    match run.shape {
+        RunShape::Steady { speed_rpm } | RunShape::LongRun { speed_rpm } => {
+            Ok(Run::steady(speed_rpm, run.duration_s.min(20.0)))
+        }
         RunShape::Ramp { from_rpm, to_rpm } => {
             if from_rpm <= 0.0 || to_rpm <= 0.0 {
                 return Err(format!(
                     "the reference speed fits a ramp {from_rpm:.0} to {to_rpm:.0} rpm: not a run-up above 0 rpm"
                 ));
             }
-            Ok(RunKind::Ramp {
-                from_rpm,
-                to_rpm,
-                duration_s,
-            })
+            Ok(run)
         }
     }
 }

@@ -12,8 +12,9 @@ use std::path::PathBuf;
 use std::time::{Duration, Instant};
 use torsim::model::{Model, parse_model, presets};
 use torsim::recording::{Recording, write_recording};
+use torsim::recording::{Run, RunShape};
 use torsim::signal::analyse;
-use torsim::transient::{RunKind, RunOptions, simulate, to_recording};
+use torsim::transient::{RunOptions, simulate, to_recording};
 
 fn rig() -> Model {
     let p = presets::preset("test-rig-70sh").expect("preset");
@@ -82,11 +83,7 @@ fn a_run_up_streams_in_and_adds_up_to_the_finished_run() {
     assert_eq!(live.generation, generation);
     assert_eq!(
         live.layout.kind,
-        RunKind::Ramp {
-            from_rpm: 1000.0,
-            to_rpm: 6000.0,
-            duration_s: 60.0
-        },
+        Run::ramp(1000.0, 6000.0, 60.0),
         "defaults: the model's speed range in 60 s"
     );
     let early = live.group(GroupKind::Speed).expect("IAS").1.time_s.len();
@@ -178,7 +175,7 @@ fn a_newer_edit_cancels_the_running_run_up() {
 
 /// Simulates `kind` on the test rig as `torsim simulate --csv` does and writes a
 /// recording of two stations (engine and middle flange), as a bench would have them.
-fn write_rig_recording(dir: &std::path::Path, name: &str, kind: RunKind) -> (PathBuf, Recording) {
+fn write_rig_recording(dir: &std::path::Path, name: &str, kind: Run) -> (PathBuf, Recording) {
     let model = rig();
     let options = RunOptions {
         rate_hz: 4096.0,
@@ -198,10 +195,7 @@ fn write_rig_recording(dir: &std::path::Path, name: &str, kind: RunKind) -> (Pat
 #[test]
 fn a_steady_recording_is_overlaid_with_its_dominant_order() {
     let dir = temp_dir("steady");
-    let kind = RunKind::Steady {
-        speed_rpm: 3000.0,
-        duration_s: 1.0,
-    };
+    let kind = Run::steady(3000.0, 1.0);
     let (path, recording) = write_rig_recording(&dir, "regime-a.csv", kind);
     let measured = analyse(&recording).expect("analysis");
     let engine = &measured.stations[0];
@@ -262,11 +256,7 @@ fn a_steady_recording_is_overlaid_with_its_dominant_order() {
 #[test]
 fn a_run_up_recording_is_simulated_with_its_speed_profile() {
     let dir = temp_dir("run-up");
-    let kind = RunKind::Ramp {
-        from_rpm: 2000.0,
-        to_rpm: 3000.0,
-        duration_s: 2.0,
-    };
+    let kind = Run::ramp(2000.0, 3000.0, 2.0);
     let (path, _) = write_rig_recording(&dir, "run-up.csv", kind);
     let mut h = harness();
     open_recording(h.state_mut(), path);
@@ -276,9 +266,8 @@ fn a_run_up_recording_is_simulated_with_its_speed_profile() {
         |_| {},
     );
     let live = h.state().results.live.as_ref().expect("live");
-    let RunKind::Ramp {
-        from_rpm,
-        to_rpm,
+    let Run {
+        shape: RunShape::Ramp { from_rpm, to_rpm },
         duration_s,
     } = live.layout.kind
     else {

@@ -3,27 +3,14 @@
 //! second), accumulated in [`LiveTrace`].
 
 use std::sync::Arc;
-use torsim::transient::RunKind;
+use torsim::recording::Run;
 
 /// What the GUI asks the worker to run in time.
 #[derive(Debug, Clone, PartialEq)]
 pub enum TraceSpec {
-    /// A steady run.
-    Steady {
-        /// Mean speed of the reference, rpm.
-        speed_rpm: f64,
-        /// Recorded duration, s.
-        duration_s: f64,
-    },
-    /// A linear run-up (or run-down).
-    RunUp {
-        /// Start speed, rpm.
-        from_rpm: f64,
-        /// End speed, rpm.
-        to_rpm: f64,
-        /// Rate, rpm/s (> 0).
-        rate_rpm_per_s: f64,
-    },
+    /// A steady run, or a linear run-up (or run-down) of a finite duration > 0 between two
+    /// different speeds.
+    Run(Run),
     /// The regime of the open recording (its speed, or its run-up profile).
     MatchRecording,
 }
@@ -62,7 +49,7 @@ pub struct TraceLayout {
     /// For a person: `"run-up 1000 to 2000 rpm in 60 s"`.
     pub label: String,
     /// What is run.
-    pub kind: RunKind,
+    pub kind: Run,
     /// Engine load 0..1.
     pub load: f64,
     /// Reference node name.
@@ -84,34 +71,32 @@ impl TraceLayout {
     /// The time range a plot opens on, s: a steady run's first six working cycles (its
     /// waveform), a ramp's whole duration.
     pub fn opening_range_s(&self) -> [f64; 2] {
-        match self.kind {
-            RunKind::Steady {
-                speed_rpm,
-                duration_s,
-            } => [
+        let duration_s = self.kind.duration_s;
+        if self.kind.is_ramp() {
+            [0.0, duration_s]
+        } else {
+            let speed_rpm = self.kind.speeds_rpm()[0];
+            [
                 0.0,
                 (6.0 * self.cycle_rev * 60.0 / speed_rpm).min(duration_s),
-            ],
-            RunKind::Ramp { duration_s, .. } => [0.0, duration_s],
+            ]
         }
     }
 
     /// True for a run-up or run-down.
     pub fn is_ramp(&self) -> bool {
-        matches!(self.kind, RunKind::Ramp { .. })
+        self.kind.is_ramp()
     }
 }
 
 /// Mean speed of the reference in a run of `kind` at `t_s` from the start of recording,
 /// rpm.
-pub fn profile_rpm(kind: RunKind, t_s: f64) -> f64 {
-    match kind {
-        RunKind::Steady { speed_rpm, .. } => speed_rpm,
-        RunKind::Ramp {
-            from_rpm,
-            to_rpm,
-            duration_s,
-        } => from_rpm + (to_rpm - from_rpm) * (t_s / duration_s).clamp(0.0, 1.0),
+pub fn profile_rpm(kind: Run, t_s: f64) -> f64 {
+    let [from_rpm, to_rpm] = kind.speeds_rpm();
+    if kind.is_ramp() && kind.duration_s > 0.0 {
+        from_rpm + (to_rpm - from_rpm) * (t_s / kind.duration_s).clamp(0.0, 1.0)
+    } else {
+        from_rpm
     }
 }
 

@@ -14,10 +14,9 @@ use std::sync::Arc;
 use std::time::{Duration, Instant};
 use torsim::model::Model;
 use torsim::physics::System;
+use torsim::recording::Run;
 use torsim::signal::{Analysis, analyse_with};
-use torsim::transient::{
-    Event, RunKind, RunOptions, TransientError, simulate_observed, to_recording,
-};
+use torsim::transient::{Event, RunOptions, TransientError, simulate_observed, to_recording};
 
 /// Longest wait between two chunks sent to the window.
 pub const SEND_EVERY: Duration = Duration::from_millis(200);
@@ -35,54 +34,33 @@ pub struct RunAnalysis {
 }
 
 /// For a person: `"run-up 1000 to 2000 rpm in 60 s"`.
-pub fn describe(kind: RunKind) -> String {
-    match kind {
-        RunKind::Steady {
-            speed_rpm,
-            duration_s,
-        } => format!("steady {speed_rpm:.0} rpm, {duration_s:.1} s"),
-        RunKind::Ramp {
-            from_rpm,
-            to_rpm,
-            duration_s,
-        } => {
-            let what = if to_rpm >= from_rpm {
-                "run-up"
-            } else {
-                "run-down"
-            };
-            format!("{what} {from_rpm:.0} to {to_rpm:.0} rpm in {duration_s:.0} s")
-        }
+pub fn describe(kind: Run) -> String {
+    if kind.is_ramp() {
+        format!("{} in {:.0} s", kind.shape.describe(), kind.duration_s)
+    } else {
+        format!(
+            "steady {:.0} rpm, {:.1} s",
+            kind.speeds_rpm()[0],
+            kind.duration_s
+        )
     }
 }
 
 /// What to run for `spec`.
-pub fn resolve(spec: &TraceSpec, recording: Option<&RecordingView>) -> Result<RunKind, String> {
+pub fn resolve(spec: &TraceSpec, recording: Option<&RecordingView>) -> Result<Run, String> {
     let kind = match *spec {
-        TraceSpec::Steady {
-            speed_rpm,
-            duration_s,
-        } => RunKind::Steady {
-            speed_rpm,
-            duration_s,
-        },
-        TraceSpec::RunUp {
-            from_rpm,
-            to_rpm,
-            rate_rpm_per_s,
-        } => {
-            let rate_ok = rate_rpm_per_s.is_finite() && rate_rpm_per_s > 0.0;
-            if !rate_ok || from_rpm == to_rpm {
+        TraceSpec::Run(run) if run.is_ramp() => {
+            let [from_rpm, to_rpm] = run.speeds_rpm();
+            let duration_ok = run.duration_s.is_finite() && run.duration_s > 0.0;
+            if !duration_ok || from_rpm == to_rpm {
+                let rate_rpm_per_s = (to_rpm - from_rpm).abs() / run.duration_s;
                 return Err(format!(
                     "a run-up needs two different speeds and a rate > 0 rpm/s (got {from_rpm} to {to_rpm} rpm at {rate_rpm_per_s} rpm/s)"
                 ));
             }
-            RunKind::Ramp {
-                from_rpm,
-                to_rpm,
-                duration_s: (to_rpm - from_rpm).abs() / rate_rpm_per_s,
-            }
+            run
         }
+        TraceSpec::Run(run) => run,
         TraceSpec::MatchRecording => match recording {
             Some(r) => r.regime,
             None => return Err("no recording is open: File > Open recording…".into()),
@@ -93,13 +71,9 @@ pub fn resolve(spec: &TraceSpec, recording: Option<&RecordingView>) -> Result<Ru
 
 /// Output rate, Hz: 4096, or the next power of two above 2.5 × order 12 at the top speed;
 /// at least a recording's own rate (to 20480 Hz).
-fn rate_hz(kind: RunKind, recording: Option<&RecordingView>) -> f64 {
-    let top = match kind {
-        RunKind::Steady { speed_rpm, .. } => speed_rpm,
-        RunKind::Ramp {
-            from_rpm, to_rpm, ..
-        } => from_rpm.max(to_rpm),
-    };
+fn rate_hz(kind: Run, recording: Option<&RecordingView>) -> f64 {
+    let [from_rpm, to_rpm] = kind.speeds_rpm();
+    let top = from_rpm.max(to_rpm);
     let needed = (2.5 * 12.0 * top / 60.0).max(4096.0);
     let mut rate = needed.log2().ceil().exp2();
     if let Some(r) = recording {
@@ -221,9 +195,9 @@ fn cycle_shift_s(sim: &Analysis, recording: &RecordingView) -> f64 {
     let (Some((s, speed_rpm)), Some((m, _))) = (station(sim), station(measured)) else {
         return 0.0;
     };
-    let RunKind::Steady { .. } = recording.regime else {
+    if recording.regime.is_ramp() {
         return 0.0;
-    };
+    }
     let n = s.len();
     if n == 0 || m.len() != n || speed_rpm <= 0.0 {
         return 0.0;

@@ -7,7 +7,8 @@
 use super::trace_data::{GroupKind, GroupLayout, GroupSamples, TraceChunk, TraceLayout};
 use torsim::model::{ConnectionKind, GROUND, Model};
 use torsim::physics::System;
-use torsim::transient::{Chunk, RunKind};
+use torsim::recording::Run;
+use torsim::transient::Chunk;
 
 /// Builds the groups chunk by chunk.
 pub struct SeriesBuilder {
@@ -43,7 +44,7 @@ impl SeriesBuilder {
     pub fn new(
         model: &Model,
         system: &System,
-        kind: RunKind,
+        kind: Run,
         load: f64,
         label: String,
         first: &Chunk,

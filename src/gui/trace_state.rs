@@ -9,6 +9,7 @@ use super::worker::SimResult;
 use crossbeam_channel::Receiver;
 use std::path::PathBuf;
 use torsim::model::Model;
+use torsim::recording::Run;
 
 /// Duration of the default run-up over the model's speed range, s.
 pub const DEFAULT_RUN_UP_S: f64 = 60.0;
@@ -70,7 +71,7 @@ pub struct TraceState {
     /// Show IAS about each station's mean speed (default) rather than absolute.
     pub ias_about_mean: bool,
     /// The kind of run last drawn (another kind resets zoom and legend).
-    pub drawn: Option<torsim::transient::RunKind>,
+    pub drawn: Option<torsim::recording::Run>,
     /// The orders whose tracks are drawn (default: the engine's main orders, multiples
     /// of the first number).
     pub track_orders: Option<(f64, Vec<f64>)>,
@@ -114,15 +115,13 @@ impl TraceState {
             self.rate_rpm_per_s = (to - from).abs() / DEFAULT_RUN_UP_S;
         }
         match self.mode {
-            TraceMode::Steady => TraceSpec::Steady {
-                speed_rpm: steady_rpm,
-                duration_s: self.steady_duration_s,
-            },
-            TraceMode::RunUp => TraceSpec::RunUp {
-                from_rpm: self.from_rpm,
-                to_rpm: self.to_rpm,
-                rate_rpm_per_s: self.rate_rpm_per_s,
-            },
+            TraceMode::Steady => TraceSpec::Run(Run::steady(steady_rpm, self.steady_duration_s)),
+            // A rate ≤ 0 gives a duration that is not finite, refused by `resolve`.
+            TraceMode::RunUp => TraceSpec::Run(Run::ramp(
+                self.from_rpm,
+                self.to_rpm,
+                (self.to_rpm - self.from_rpm).abs() / self.rate_rpm_per_s,
+            )),
             TraceMode::Recording => TraceSpec::MatchRecording,
         }
     }

@@ -7,6 +7,7 @@ pub mod bad_samples;
 pub mod error;
 pub mod integrity;
 pub mod read;
+pub mod run;
 pub mod shape;
 pub mod sidecar;
 pub mod table;
@@ -21,7 +22,8 @@ pub use read::{
     ReadOptions, ReadOutcome, parse_recording, parse_recording_with, read_recording,
     read_recording_with, sidecar_path,
 };
-pub use shape::{LONG_RUN_S, RunShape, classify};
+pub use run::Run;
+pub use shape::{LONG_RUN_S, RunShape, classify, duration_s};
 pub use sidecar::{parse_csv_check, parse_sidecar, sidecar_string, sidecar_text};
 pub use types::*;
 pub use write::{check_recording, csv_string, prepare_recording, write_recording};

@@ -65,7 +65,7 @@ impl RunShape {
     }
 
     /// A steady shape: a long run when `duration_s` ≥ [`LONG_RUN_S`].
-    pub fn steady(speed_rpm: f64, duration_s: f64) -> Self {
+    pub const fn steady(speed_rpm: f64, duration_s: f64) -> Self {
         if duration_s >= LONG_RUN_S {
             Self::LongRun { speed_rpm }
         } else {

@@ -7,14 +7,14 @@ use super::SynthError;
 use super::fir::Decimator;
 use super::ias::{Chain, measure};
 use super::measurement::Measurement;
-use super::plan::{Plan, PlannedKind, PlannedRun};
+use super::plan::{Plan, PlannedRun};
 use super::shaft_angle::ShaftAngle;
 use super::wobble::Wobble;
 use crate::effects::Truth;
 use crate::effects::rng::Rng;
 use crate::effects::sensor::{SensorArtifact, line_angles};
-use crate::recording::{self, Channel, ChannelKind, Recording, RecordingMeta, Sensor};
-use crate::transient::{RunKind, RunOptions, simulate};
+use crate::recording::{Channel, ChannelKind, Recording, RecordingMeta, Run, RunShape, Sensor};
+use crate::transient::{RunOptions, simulate};
 use std::f64::consts::TAU;
 
 /// One generated recording and the stem of its files.
@@ -85,10 +85,8 @@ fn generate_run(
     );
     let decimator = Decimator::new(fine_factor(rate));
     let sim_rate = (2.0 * rate).max(8192.0);
-    let lo_rpm = match run.kind {
-        PlannedKind::Steady { speed_rpm } => speed_rpm,
-        PlannedKind::RunUp { from_rpm, to_rpm } => from_rpm.min(to_rpm),
-    };
+    let [from_rpm, to_rpm] = run.shape.speeds_rpm();
+    let lo_rpm = from_rpm.min(to_rpm);
     let system = crate::physics::System::new(model, crate::physics::OperatingPoint::default())
         .map_err(|e| fail(e.to_string()))?;
     let slowest_rev_s = m
@@ -105,22 +103,17 @@ fn generate_run(
         + 16.0 / sim_rate
         + 0.02;
     let sim_duration = run.duration_s + 2.0 * margin_s;
-    let kind = match run.kind {
-        PlannedKind::Steady { speed_rpm } => RunKind::Steady {
-            speed_rpm,
-            duration_s: sim_duration,
-        },
-        PlannedKind::RunUp { from_rpm, to_rpm } => {
+    let kind = match run.shape {
+        RunShape::Steady { speed_rpm } | RunShape::LongRun { speed_rpm } => {
+            Run::steady(speed_rpm, sim_duration)
+        }
+        RunShape::Ramp { from_rpm, to_rpm } => {
             let slope = (to_rpm - from_rpm) / run.duration_s;
             let from = from_rpm - slope * margin_s;
             if from <= 0.0 || lo_rpm <= 0.0 {
                 return Err(fail("the run-up starts at or below 0 rpm".into()));
             }
-            RunKind::Ramp {
-                from_rpm: from,
-                to_rpm: to_rpm + slope * margin_s,
-                duration_s: sim_duration,
-            }
+            Run::ramp(from, to_rpm + slope * margin_s, sim_duration)
         }
     };
     let options = RunOptions {
@@ -135,13 +128,7 @@ fn generate_run(
         }
     })?;
     let mut channels = Vec::new();
-    let mut meta = RecordingMeta::new(
-        match run.kind {
-            PlannedKind::Steady { .. } => recording::RunKind::Steady,
-            PlannedKind::RunUp { .. } => recording::RunKind::RunUp,
-        },
-        reference,
-    );
+    let mut meta = RecordingMeta::new(run.shape.sidecar_kind(), reference);
     for (k, station) in m.stations.iter().enumerate() {
         let node = sim
             .node_names
@@ -199,8 +186,8 @@ fn generate_run(
             },
         );
     }
-    if let PlannedKind::Steady { speed_rpm } = run.kind {
-        meta.speed_rpm = Some(speed_rpm);
+    if !run.shape.is_ramp() {
+        meta.speed_rpm = Some(from_rpm);
     }
     meta.load = run.load;
     meta.strokes = model.strokes();

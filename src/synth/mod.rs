@@ -44,9 +44,7 @@ pub mod shaft_angle;
 pub mod truth_file;
 pub mod wobble;
 
-pub use crate::campaign::{
-    Plan, PlanDurations, PlannedKind, PlannedRun, Station, plan, plan_file, station,
-};
+pub use crate::campaign::{Plan, PlanDurations, PlannedRun, Station, plan, plan_file, station};
 pub use crate::effects::rng;
 pub use crate::effects::{
     AppliedEffect, Effect, EffectSpec, ParamValue, ParameterError, SensorArtifact, Truth,

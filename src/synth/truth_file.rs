@@ -4,10 +4,11 @@
 //! the library reads it, and the diagnosis must not.
 
 use super::measurement::Measurement;
-use super::plan::{Plan, PlannedKind};
+use super::plan::Plan;
 use crate::effects::ParamValue;
 use crate::effects::SensorArtifact;
 use crate::effects::Truth;
+use crate::recording::RunShape;
 use std::fmt::Write;
 
 /// The file name of the truth in a generated folder.
@@ -126,12 +127,12 @@ pub fn truth_toml(
         line("[[recording]]".into());
         line(format!("file = {}", quote(&format!("{}.csv", r.file))));
         line(format!("label = {}", quote(&r.label)));
-        match r.kind {
-            PlannedKind::Steady { speed_rpm } => {
+        match r.shape {
+            RunShape::Steady { speed_rpm } | RunShape::LongRun { speed_rpm } => {
                 line("kind = \"steady\"".into());
                 line(format!("speed_rpm = {}", float(speed_rpm)));
             }
-            PlannedKind::RunUp { from_rpm, to_rpm } => {
+            RunShape::Ramp { from_rpm, to_rpm } => {
                 line("kind = \"run-up\"".into());
                 line(format!("from_rpm = {}", float(from_rpm)));
                 line(format!("to_rpm = {}", float(to_rpm)));

@@ -32,6 +32,6 @@ pub mod validate;
 pub use error::TransientError;
 pub use export::to_recording;
 pub use observe::{Chunk, Event};
-pub use run::{RunKind, RunOptions, Settling, Simulation, simulate, simulate_observed};
+pub use run::{RunOptions, Settling, Simulation, simulate, simulate_observed};
 pub use speed::SpeedProfile;
 pub use stepper::Method;

@@ -14,28 +14,8 @@ use super::start::initial_state;
 use super::stepper::{Method, Stepper, is_stiff};
 use super::validate::check_run;
 use crate::model::Model;
+use crate::recording::Run;
 use std::f64::consts::TAU;
-
-/// What to run.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum RunKind {
-    /// Constant mean speed of the reference shaft for `duration_s` after settling.
-    Steady {
-        /// Mean speed, rpm.
-        speed_rpm: f64,
-        /// Recorded duration, s.
-        duration_s: f64,
-    },
-    /// A linear ramp after settling at `from_rpm` (run-up, or run-down if `to < from`).
-    Ramp {
-        /// Start speed, rpm.
-        from_rpm: f64,
-        /// End speed, rpm.
-        to_rpm: f64,
-        /// Ramp (and recording) duration, s.
-        duration_s: f64,
-    },
-}
 
 /// How to run.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -134,41 +114,33 @@ pub struct Simulation {
     pub warnings: Vec<String>,
 }
 
-/// Runs `kind` on `model`. `progress` is called with the fraction done (0–1) a few
+/// Runs `run` on `model` (a steady or long run at constant mean speed after settling, or
+/// a linear ramp after settling at its start speed). `progress` is called with the fraction done (0–1) a few
 /// hundred times per run; returning `false` cancels.
 pub fn simulate(
     model: &Model,
-    kind: RunKind,
+    run: Run,
     options: RunOptions,
     progress: &mut dyn FnMut(f64) -> bool,
 ) -> Result<Simulation, TransientError> {
-    simulate_observed(model, kind, options, &mut |event| match event {
+    simulate_observed(model, run, options, &mut |event| match event {
         Event::Progress(f) => progress(f),
         Event::Chunk(_) => true,
     })
 }
 
-/// Runs `kind` on `model` like [`simulate`], reporting to `observer` the fraction done
+/// Runs `run` on `model` like [`simulate`], reporting to `observer` the fraction done
 /// and, every 0.5 % of the recording and at its end, the samples recorded since the last
 /// [`Event::Chunk`]. Returning `false` from `observer` cancels.
 pub fn simulate_observed(
     model: &Model,
-    kind: RunKind,
+    run: Run,
     options: RunOptions,
     observer: &mut dyn FnMut(Event) -> bool,
 ) -> Result<Simulation, TransientError> {
-    let (from_rpm, to_rpm, duration_s) = match kind {
-        RunKind::Steady {
-            speed_rpm,
-            duration_s,
-        } => (speed_rpm, speed_rpm, duration_s),
-        RunKind::Ramp {
-            from_rpm,
-            to_rpm,
-            duration_s,
-        } => (from_rpm, to_rpm, duration_s),
-    };
-    check_run(model, kind, &options)?;
+    let [from_rpm, to_rpm] = run.speeds_rpm();
+    let duration_s = run.duration_s;
+    check_run(model, run, &options)?;
     let mut plant = Plant::new(
         model,
         options.load,
@@ -221,12 +193,13 @@ pub fn simulate_observed(
         }
     };
     // A ramp is itself a transient: settling its start to 1e-3 of the vibration is enough.
-    let settle_options = match kind {
-        RunKind::Ramp { .. } => RunOptions {
+    let settle_options = if run.is_ramp() {
+        RunOptions {
             settle_tolerance: options.settle_tolerance.max(1e-3),
             ..options
-        },
-        RunKind::Steady { .. } => options,
+        }
+    } else {
+        options
     };
     let course = Course {
         plant: &plant,
@@ -242,7 +215,7 @@ pub fn simulate_observed(
         &mut |f| observer(Event::Progress(f)),
     )?;
     let t0 = solver.t();
-    if let RunKind::Ramp { .. } = kind {
+    if run.is_ramp() {
         profile = SpeedProfile::ramp(from_rpm, to_rpm, t0, duration_s);
     }
     let samples = (duration_s * options.rate_hz).round() as usize;

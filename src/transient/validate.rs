@@ -3,12 +3,13 @@
 //! speeds up to [`Limits::max_speed_rpm`], samples `duration × rate` up to
 //! [`Limits::max_samples`], an output rate that carries at least the model's lowest
 //! order, and a tolerance within [`Limits::min_rtol`] … 0.1. Errors name the key
-//! (`RunKind`/`RunOptions` field) and the CLI flag.
+//! (`Run`/`RunOptions` field) and the CLI flag.
 
 use super::TransientError;
-use super::run::{RunKind, RunOptions};
+use super::run::RunOptions;
 use crate::limits::{self, Limits};
 use crate::model::Model;
+use crate::recording::Run;
 
 /// The analysis reports orders up to this fraction of the Nyquist frequency
 /// ([`crate::signal::AnalysisOptions::max_order`]).
@@ -17,25 +18,18 @@ const ANALYSED_FRACTION_OF_NYQUIST: f64 = 0.8;
 /// Largest relative tolerance: above it the integrator's error control means nothing.
 const MAX_RTOL: f64 = 0.1;
 
-/// Checks `kind` and `options` for `model` against the [`limits::current`] limits.
-pub fn check_run(model: &Model, kind: RunKind, options: &RunOptions) -> Result<(), TransientError> {
+/// Checks `run` and `options` for `model` against the [`limits::current`] limits.
+pub fn check_run(model: &Model, run: Run, options: &RunOptions) -> Result<(), TransientError> {
     let limits = limits::current();
-    let (speeds, duration_s): (&[(&str, f64)], f64) = match &kind {
-        RunKind::Steady {
-            speed_rpm,
-            duration_s,
-        } => (&[("speed_rpm (--speed-rpm)", *speed_rpm)], *duration_s),
-        RunKind::Ramp {
-            from_rpm,
-            to_rpm,
-            duration_s,
-        } => (
-            &[
-                ("from_rpm (--run-up FROM)", *from_rpm),
-                ("to_rpm (--run-up TO)", *to_rpm),
-            ],
-            *duration_s,
-        ),
+    let [from_rpm, to_rpm] = run.speeds_rpm();
+    let duration_s = run.duration_s;
+    let speeds: &[(&str, f64)] = if run.is_ramp() {
+        &[
+            ("from_rpm (--run-up FROM)", from_rpm),
+            ("to_rpm (--run-up TO)", to_rpm),
+        ]
+    } else {
+        &[("speed_rpm (--speed-rpm)", from_rpm)]
     };
     for &(what, v) in speeds {
         positive(what, v, "rpm")?;

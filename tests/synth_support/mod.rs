@@ -5,10 +5,11 @@
 use std::path::PathBuf;
 use torsim::model::{Model, parse_model, presets, read_model_file};
 use torsim::recording::Recording;
+use torsim::recording::RunShape;
 use torsim::signal::{AnalysisOptions, analyse, analyse_with};
 use torsim::synth::{
-    EffectSpec, Measurement, Plan, PlannedKind, PlannedRun, Station, SynthRecording, Truth,
-    build_truth, generate,
+    EffectSpec, Measurement, Plan, PlannedRun, Station, SynthRecording, Truth, build_truth,
+    generate,
 };
 
 /// The diagnosis bench preset.
@@ -32,7 +33,7 @@ pub fn steady(file: &str, speed_rpm: f64, load: f64, duration_s: f64) -> Planned
     PlannedRun {
         file: file.into(),
         label: file.into(),
-        kind: PlannedKind::Steady { speed_rpm },
+        shape: RunShape::steady(speed_rpm, duration_s),
         duration_s,
         load,
         rate_hz: None,
@@ -44,7 +45,7 @@ pub fn run_up(from_rpm: f64, to_rpm: f64, duration_s: f64) -> PlannedRun {
     PlannedRun {
         file: "run-up".into(),
         label: "run-up".into(),
-        kind: PlannedKind::RunUp { from_rpm, to_rpm },
+        shape: RunShape::Ramp { from_rpm, to_rpm },
         duration_s,
         load: 1.0,
         rate_hz: None,

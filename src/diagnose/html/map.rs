@@ -132,7 +132,7 @@ fn panels<'a>(
     let (sweeps, points): (Vec<&str>, Vec<&str>) =
         labels.iter().partition(|&&label| {
             match report.recordings.iter().find(|r| r.label == label) {
-                Some(r) => r.kind == "run-up",
+                Some(r) => r.kind == crate::recording::RunKind::RunUp.as_str(),
                 None => {
                     let own = of(label);
                     let (lo, hi) = own.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |a, c| {

@@ -52,7 +52,7 @@ fn drawn<'a>(report: &'a Report, station: &str, order_step: f64) -> Vec<Drawn<'a
         report
             .recordings
             .iter()
-            .any(|r| r.label == label && r.kind == "run-up")
+            .any(|r| r.label == label && r.kind == torsim::recording::RunKind::RunUp.as_str())
     };
     let mut out: Vec<Drawn> = report
         .mismatch_map

@@ -134,7 +134,7 @@ pub fn traces_data(app: &TorsimApp) -> Option<PlotData> {
         return None;
     }
     if let Some(first) = live.groups.first()
-        && matches!(layout.kind, torsim::transient::RunKind::Ramp { .. })
+        && layout.kind.is_ramp()
     {
         let points = first.time_s.iter().map(|&t| [t, layout.speed_at(t)]);
         columns.insert(

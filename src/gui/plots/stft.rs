@@ -14,8 +14,8 @@ use egui_plot::{
     AxisHints, HLine, HoverPosition, Line, LineStyle, Plot, PlotImage, PlotPoint, Text,
 };
 use std::sync::Arc;
+use torsim::recording::Run;
 use torsim::signal::{Analysis, StationAnalysis};
-use torsim::transient::RunKind;
 
 /// Width of the colour scale beside the spectrogram, points.
 pub const SCALE_W: f32 = 78.0;
@@ -260,12 +260,12 @@ pub fn spectrogram_ui(app: &mut TorsimApp, ui: &mut Ui) {
 /// known, else interpolated between the STFT windows.
 #[derive(Clone)]
 pub struct SpeedAxis {
-    ramp: Option<RunKind>,
+    ramp: Option<Run>,
     set: Arc<SpectrogramSet>,
 }
 
 impl SpeedAxis {
-    fn new(ramp: Option<RunKind>, set: Arc<SpectrogramSet>) -> Self {
+    fn new(ramp: Option<Run>, set: Arc<SpectrogramSet>) -> Self {
         Self { ramp, set }
     }
 
@@ -280,11 +280,7 @@ impl SpeedAxis {
     /// Grid lines at round speeds.
     pub fn grid(&self) -> impl Fn(egui_plot::GridInput) -> Vec<egui_plot::GridMark> + use<> {
         let (from, rate) = match self.ramp {
-            Some(RunKind::Ramp {
-                from_rpm,
-                to_rpm,
-                duration_s,
-            }) => (from_rpm, (to_rpm - from_rpm) / duration_s),
+            Some(run) if run.is_ramp() => (run.speeds_rpm()[0], run.rate_rpm_per_s()),
             _ => (0.0, 0.0),
         };
         time_series::speed_grid(from, rate)
