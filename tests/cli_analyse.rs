@@ -18,6 +18,7 @@ fn analyse_json_shape_steady() {
         2.0,
     );
     let bs = theta.iter().map(|th| 1500.0 + 2.0 * th.cos()).collect();
+    let es_mean_rpm = es.iter().sum::<f64>() / es.len() as f64;
     let dir = temp_dir("cli-steady");
     let path = dir.join("regime-a.csv");
     write_recording(
@@ -47,6 +48,18 @@ fn analyse_json_shape_steady() {
     assert!((got - rel).abs() < 1e-3, "{got} vs {rel}");
     assert!(v["n_rel"]["rms_rpm"]["es-bs"].as_f64().is_some());
     assert!(v.get("stft").is_none(), "a steady run has no STFT");
+    // The run by the one classifier: steady at the mean of the reference's column (no
+    // `speed_rpm` in the sidecar; printed to 1e-6 rpm, hence 1e-5), 4096 samples at
+    // 2048 Hz = 2 s.
+    assert_eq!(v["run"]["shape"], "steady");
+    let speeds = v["run"]["speeds_rpm"].as_array().expect("speeds_rpm");
+    assert!(
+        speeds
+            .iter()
+            .all(|s| (s.as_f64().unwrap() - es_mean_rpm).abs() < 1e-5),
+        "{speeds:?} vs {es_mean_rpm}"
+    );
+    assert!((v["run"]["duration_s"].as_f64().unwrap() - 2.0).abs() < 1e-9);
     // The human table names the stations.
     let out = torsim(&["analyse", &path]);
     let text = String::from_utf8_lossy(&out.stdout);
@@ -63,6 +76,19 @@ fn analyse_json_run_up_has_stft() {
     let path = dir.join("run-up.csv");
     write_recording(&recording(RunKind::RunUp, t, vec![("crank", n)]), &path).expect("write");
     let v = json(&["analyse", &path.to_string_lossy(), "--json"]);
+    // A ramp by the one classifier: the least-squares line through 1000 + 500 t rpm and a
+    // 5 rpm order 1 (whose bias on the line's ends is well below 3 rpm).
+    assert_eq!(v["run"]["shape"], "run-up");
+    let ends: Vec<f64> = v["run"]["speeds_rpm"]
+        .as_array()
+        .expect("speeds_rpm")
+        .iter()
+        .filter_map(|s| s.as_f64())
+        .collect();
+    assert!(
+        (ends[0] - 1000.0).abs() < 3.0 && (ends[1] - 2000.0).abs() < 3.0,
+        "{ends:?}"
+    );
     let stft = &v["stft"];
     let times = stft["times_s"].as_array().expect("times_s");
     assert_eq!(

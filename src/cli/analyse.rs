@@ -6,7 +6,7 @@ use super::error::CliError;
 use super::format::{emit, number, numbers, order_key, outln, print_json, table};
 use serde_json::{Map, Value, json};
 use std::path::Path;
-use torsim::recording::{BadSamples, ReadOptions, read_recording_with};
+use torsim::recording::{BadSamples, ReadOptions, Run, read_recording_with};
 use torsim::signal::{Analysis, StationAnalysis, analyse};
 
 /// Parses `--bad-samples`: `refuse`, `interpolate` or `drop` (issue 13).
@@ -31,10 +31,31 @@ pub fn run(recording: &str, bad_samples: BadSamples, json: bool) -> Result<(), C
     let rec = read.recording;
     let analysis =
         analyse(&rec).map_err(|e| CliError::input(anyhow::anyhow!("{recording}: {e}")))?;
+    // The run as the GUI and the diagnosis see it: one classifier (issue 14, item 1).
+    let run = Run::of(&rec);
     if json {
-        return print_json(&to_json(&analysis)?);
+        let mut doc = to_json(&analysis)?;
+        if let Value::Object(map) = &mut doc {
+            map.insert("run".into(), run_json(&run)?);
+        }
+        return print_json(&doc);
     }
-    print_analysis(recording, &analysis, "")
+    let label = format!(
+        "{recording} ({}, {:.3} s)",
+        run.shape.describe(),
+        run.duration_s
+    );
+    print_analysis(&label, &analysis, "")
+}
+
+/// `{"shape": "steady" | "long run" | "run-up", "speeds_rpm": [start, end], "duration_s"}`
+/// of [`Run::of`] (an extension of `spec/cli.md`'s `analyse --json`).
+fn run_json(run: &Run) -> Result<Value, CliError> {
+    Ok(json!({
+        "shape": run.shape.label(),
+        "speeds_rpm": numbers(&run.speeds_rpm(), "run speed")?,
+        "duration_s": number(run.duration_s, "run duration")?,
+    }))
 }
 
 /// Prints an analysis as tables, headed by `label`, with `extra` lines at the end.
