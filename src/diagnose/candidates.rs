@@ -13,12 +13,14 @@
 //! | `crank_variable_inertia` | engine without reciprocating mass | `mass_kg` per cylinder | 1100 kg/m³·bore³ |
 //! | `gear_backlash` | gear with mesh stiffness | `backlash_deg` | 0.05 |
 //! | `cylinder_imbalance` | each cylinder | `pressure_scale` | 0.95 |
-//! | `sensor_artifact` | each station | tape `joint_fraction` | 0.02 |
+//! | `sensor_artifact` | each station, `kind = tape_joint` | tape `joint_fraction` | 0.02 |
+//! | `sensor_artifact` | each station, `kind = pitch_error` | `error_deg` (eccentricity) | 0.05 |
 
 use super::fit::Bounds;
-use super::sensor::TapeJoint;
+use super::sensor::{ArtifactForm, TapeJoint};
 use crate::effects::{Effect, EffectSpec, build_truth};
 use crate::model::{ConnectionKind, Model};
+use std::sync::Arc;
 
 /// A fitted parameter: its key, start, bounds and whether it is fitted in log.
 #[derive(Debug, Clone, PartialEq)]
@@ -55,18 +57,34 @@ pub struct Candidate {
     pub fixed: Vec<(&'static str, String)>,
     /// The fitted parameter.
     pub param: Param,
+    /// A sensor artifact's amplitude per unit size at each observation, where the order
+    /// analysis was asked ([`super::sensor_gain`]); `None` elsewhere.
+    pub artifact_gains: Option<Arc<Vec<f64>>>,
 }
 
 impl Candidate {
     /// `"gear_backlash at gearbox"`.
     pub fn name(&self) -> String {
+        let kind = self
+            .fixed
+            .iter()
+            .find(|(k, _)| *k == "kind")
+            .map_or(String::new(), |(_, v)| format!(" ({v})"));
         match self.fixed.first() {
-            Some((_, v)) => format!("{} at {v}", self.effect),
+            Some((_, v)) => format!("{} at {v}{kind}", self.effect),
             None => self.effect.to_string(),
         }
     }
 
-    /// The model (and the tape joint of a sensor artifact) with the effect at `value`.
+    /// A sensor artifact's form, from its `kind` (a tape joint when it has none).
+    pub fn artifact_form(&self) -> ArtifactForm {
+        match self.fixed.iter().find(|(k, _)| *k == "kind") {
+            Some((_, v)) if v == ArtifactForm::PitchError.key() => ArtifactForm::PitchError,
+            _ => ArtifactForm::TapeJoint,
+        }
+    }
+
+    /// The model (and the artifact of a sensor artifact) with the effect at `value`.
     pub fn apply(&self, model: &Model, value: f64) -> Result<(Model, Option<TapeJoint>), String> {
         if self.effect == Effect::SensorArtifact {
             let station = self
@@ -76,7 +94,9 @@ impl Candidate {
                 .unwrap_or_default();
             let joint = TapeJoint {
                 station,
-                joint_fraction: value,
+                form: self.artifact_form(),
+                size: value,
+                gains: self.artifact_gains.clone(),
             };
             return Ok((model.clone(), Some(joint)));
         }
@@ -117,6 +137,7 @@ pub fn candidates(model: &Model, stations: &[String], long_run: bool) -> Vec<Can
                     effect,
                     fixed: at(),
                     param: p,
+                    artifact_gains: None,
                 };
                 out.push(add(
                     Effect::CouplingAmplitudeNonlinearity,
@@ -149,6 +170,7 @@ pub fn candidates(model: &Model, stations: &[String], long_run: bool) -> Vec<Can
                         effect: Effect::HystereticDamping,
                         fixed: at(),
                         param: param("reference_hz", 50.0, 1.0, 2000.0, true),
+                        artifact_gains: None,
                     });
                 }
             }
@@ -158,6 +180,7 @@ pub fn candidates(model: &Model, stations: &[String], long_run: bool) -> Vec<Can
                         effect: Effect::GearBacklash,
                         fixed: at(),
                         param: param("backlash_deg", 0.05, 0.002, 2.0, true),
+                        artifact_gains: None,
                     });
                 }
             }
@@ -182,6 +205,7 @@ pub fn candidates(model: &Model, stations: &[String], long_run: bool) -> Vec<Can
                 effect: Effect::CrankVariableInertia,
                 fixed,
                 param: param("mass_kg", start, 0.02 * start, 20.0 * start, true),
+                artifact_gains: None,
             });
         }
         for cyl in 1..=e.cylinders {
@@ -189,14 +213,25 @@ pub fn candidates(model: &Model, stations: &[String], long_run: bool) -> Vec<Can
                 effect: Effect::CylinderImbalance,
                 fixed: vec![("cylinder", cyl.to_string())],
                 param: param("pressure_scale", 0.95, 0.3, 1.5, false),
+                artifact_gains: None,
             });
         }
     }
+    // An eccentric tape or disc of 0.1 mm on a 100 mm radius is ε = 0.06°; ±2° leaves a
+    // badly mounted one room.
     for s in stations {
+        let kind = |f: ArtifactForm| vec![("station", s.clone()), ("kind", f.key().to_string())];
         out.push(Candidate {
             effect: Effect::SensorArtifact,
-            fixed: vec![("station", s.clone())],
+            fixed: kind(ArtifactForm::TapeJoint),
             param: param("joint_fraction", 0.02, -0.5, 0.5, false),
+            artifact_gains: None,
+        });
+        out.push(Candidate {
+            effect: Effect::SensorArtifact,
+            fixed: kind(ArtifactForm::PitchError),
+            param: param("error_deg", 0.05, -2.0, 2.0, false),
+            artifact_gains: None,
         });
     }
     out

@@ -67,6 +67,8 @@ pub mod run;
 mod runup_tests;
 pub mod screen;
 pub mod sensor;
+pub mod sensor_gain;
+pub mod sensor_refine;
 pub mod settling;
 pub mod spread;
 pub mod surrogate;

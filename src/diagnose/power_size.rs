@@ -14,6 +14,7 @@
 //! | `gear_backlash` | `backlash_deg` | ° | 0.05 |
 //! | `cylinder_imbalance` | `1 − pressure_scale` | 1 | 0.05 |
 //! | `sensor_artifact` | `joint_fraction` | pitch | 0.02 |
+//! | `sensor_artifact` (pitch error) | `error_deg` | ° | 0.05 |
 //!
 //! `f₀` of hysteretic damping is the reference frequency at which the hysteretic damper
 //! changes the campaign's amplitudes least (found by [`super::power`]): there the user's
@@ -113,6 +114,7 @@ pub fn effect_size(c: &Candidate, hysteretic_null_hz: f64) -> EffectSize {
         Effect::CrankVariableInertia => offset(0.0, 1.0, p.start, "kg"),
         Effect::GearBacklash => offset(0.0, 1.0, p.start, "°"),
         Effect::CylinderImbalance => offset(1.0, -1.0, 1.0 - p.start, "1"),
+        Effect::SensorArtifact if p.key == "error_deg" => offset(0.0, 1.0, p.start, "°"),
         Effect::SensorArtifact => offset(0.0, 1.0, p.start, "pitch"),
         Effect::None | Effect::ParameterError => offset(0.0, 1.0, 1.0, "1"),
     }
@@ -140,6 +142,7 @@ mod tests {
                 hi,
                 log: false,
             },
+            artifact_gains: None,
         }
     }
 

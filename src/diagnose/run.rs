@@ -8,7 +8,10 @@ use super::observe::{RunShape, observe};
 use super::restart::second_starts;
 use super::screen::{Screened, VERIFY_ROUNDS, screen_one, verify};
 use super::surrogate::plain_parameters;
-use super::{DiagnoseError, DiagnoseOptions, LabelledRecording, Report, decide, holdout};
+use super::{
+    DiagnoseError, DiagnoseOptions, LabelledRecording, Report, decide, holdout, sensor_gain,
+    sensor_refine,
+};
 use crate::model::Model;
 
 /// Rounds of linear fit and time-domain correction for the plain parameters.
@@ -77,7 +80,10 @@ pub fn diagnose(
         .runs
         .iter()
         .any(|r| matches!(r.regime, RunShape::LongRun { .. }));
-    let list = candidates(model, &stations, long_run);
+    let mut list = candidates(model, &stations, long_run);
+    // A sensor artifact at a geared station leaks through the order analysis.
+    let gains = sensor_gain::unit_gains(recordings, &cx.observed, options.max_order);
+    sensor_gain::attach(&mut list, &gains);
     let mut screened: Vec<Screened> = Vec::new();
     let mut implausible: Vec<(String, String)> = Vec::new();
     for (k, c) in list.iter().enumerate() {
@@ -98,6 +104,14 @@ pub fn diagnose(
     let before = cx.chi2(&baseline, true);
     // When the user's model already fits, no candidate needs the time domain.
     if before > decide::NONE_CHI2 {
+        step(0.5, "refitting the plain parameters with a sensor artifact")?;
+        sensor_refine::refine_best_artifact(
+            &cx,
+            &baseline,
+            &mut screened,
+            decide::fitted_score(&cx, &plain_fit, k_plain),
+            &|e| decide::fitted_score(&cx, e, k_plain + 1),
+        )?;
         second_starts(
             &cx,
             &baseline,

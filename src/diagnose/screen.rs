@@ -135,7 +135,7 @@ pub fn screen_one(
         Effect::SensorArtifact => (
             cx.fit_artifact(plain, c)?,
             true,
-            "fitted on the plain fit's time domain (a tape joint adds in power)".to_string(),
+            "fitted on the plain fit's time domain (a sensor artifact adds in power)".to_string(),
         ),
         Effect::GearBacklash => {
             let gear = c.fixed.first().map_or("", |(_, v)| v.as_str());
