@@ -139,6 +139,7 @@ mod tests {
                 lo,
                 hi,
                 log: false,
+                resonance: false,
             },
         }
     }

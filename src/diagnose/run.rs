@@ -77,7 +77,11 @@ pub fn diagnose(
         .runs
         .iter()
         .any(|r| matches!(r.regime, RunShape::LongRun { .. }));
-    let list = candidates(model, &stations, long_run);
+    let mut list = candidates(model, &stations, long_run);
+    // The branch form of `unmodelled_mode`: a local mode hanging on any node.
+    if let Some(band) = super::branch::excited_band_hz(&cx.observed) {
+        list.extend(super::branch::branch_candidates(model, band));
+    }
     let mut screened: Vec<Screened> = Vec::new();
     let mut implausible: Vec<(String, String)> = Vec::new();
     for (k, c) in list.iter().enumerate() {
