@@ -80,6 +80,9 @@ pub fn report(
         if let Some(v) = e.value {
             parameters.insert(c.param.key.to_string(), number(v));
         }
+        if let Some(j) = super::branch::branch_inertia_kg_m2(c, &e.model) {
+            parameters.insert("inertia_kg_m2".into(), number(j));
+        }
         for (p, f) in cx.plain.iter().zip(&e.factors) {
             parameters.insert(format!("scale.{}", p.name), number(*f));
         }
