@@ -146,7 +146,10 @@ mod tests {
     fn branch_refuses_what_it_cannot_build() {
         let user = host_on_ground();
         let base = EffectSpec::new(Effect::UnmodelledMode).with("form", "branch");
-        assert!(build_truth(&user, &base, 0.0, 0).is_err(), "node is required");
+        assert!(
+            build_truth(&user, &base, 0.0, 0).is_err(),
+            "node is required"
+        );
         let nowhere = base.clone().with("node", "nowhere");
         assert!(build_truth(&user, &nowhere, 0.0, 0).is_err());
         let heavy = base.with("node", "host").with("inertia_ratio", 0.9);
