@@ -166,7 +166,8 @@ pub fn report(
             baseline,
         )
     } else if let Some(b) = best.filter(|b| {
-        b.out.score < (1.0 - EFFECT_MARGIN) * plain_score
+        b.out.score < (1.0 - super::branch::margin(b.candidate)) * plain_score
+            && super::branch::inside(b.candidate, b.evaluated.value)
             && guard::improves(before, b.out.residual_after, n_held)
     }) {
         let mut parameters = BTreeMap::new();
