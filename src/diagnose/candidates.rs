@@ -10,6 +10,7 @@
 //! | `coupling_thermal_drift` | rubber stage, with a long run | `capacity_j_per_k` (eq. 10–11) | 300 |
 //! | `hysteretic_damping` | spring with a viscous damper | `reference_hz` where ψ matches | 50 |
 //! | `unmodelled_mode` | rubber stage or shaft | `inertia_kg_m2` of a middle flange | ¼ lightest node |
+//! | `unmodelled_mode` (`form = branch`, [`super::branch`]) | every node | `frequency_hz` of a branch | grid over the excited band |
 //! | `crank_variable_inertia` | engine without reciprocating mass | `mass_kg` per cylinder | 1100 kg/m³·bore³ |
 //! | `gear_backlash` | gear with mesh stiffness | `backlash_deg` | 0.05 |
 //! | `cylinder_imbalance` | each cylinder | `pressure_scale` | 0.95 |
@@ -35,7 +36,17 @@ pub struct Param {
     pub hi: f64,
     /// Fitted as its logarithm (positive scale-like values).
     pub log: bool,
+    /// It places a narrow resonance (a frequency, fitted in log): its fit starts from the
+    /// best of values [`RESONANCE_START_STEP`] apart over its whole range, since a start
+    /// beside a resonance's valley does not roll into it.
+    pub resonance: bool,
 }
+
+/// Ratio between the start values of a [`Param::resonance`]: 2^(1/6), 12 %, three times
+/// a branch's half-power width at its default damping ratio of 2 %
+/// ([`crate::effects::branch::DEFAULT_DAMPING_RATIO`]); a run-up's order amplitudes feel
+/// the mode over a wider band than that, so the valley seen from the starts is wider.
+pub const RESONANCE_START_STEP: f64 = 1.122_462_048_309_373;
 
 impl Param {
     /// Its bounds for a fit.
@@ -117,6 +128,7 @@ fn param(key: &'static str, start: f64, lo: f64, hi: f64, log: bool) -> Param {
         lo,
         hi,
         log,
+        resonance: false,
     }
 }
 

@@ -80,6 +80,9 @@ pub fn report(
         if let Some(v) = e.value {
             parameters.insert(c.param.key.to_string(), number(v));
         }
+        if let Some(j) = super::branch::branch_inertia_kg_m2(c, &e.model) {
+            parameters.insert("inertia_kg_m2".into(), number(j));
+        }
         for (p, f) in cx.plain.iter().zip(&e.factors) {
             parameters.insert(format!("scale.{}", p.name), number(*f));
         }
@@ -163,7 +166,8 @@ pub fn report(
             baseline,
         )
     } else if let Some(b) = best.filter(|b| {
-        b.out.score < (1.0 - EFFECT_MARGIN) * plain_score
+        b.out.score < (1.0 - super::branch::margin(b.candidate)) * plain_score
+            && super::branch::inside(b.candidate, b.evaluated.value)
             && guard::improves(before, b.out.residual_after, n_held)
     }) {
         let mut parameters = BTreeMap::new();

@@ -35,6 +35,7 @@
 //! - [`report`]: the JSON of the spec; [`html`] the page for a person.
 
 pub mod accept;
+pub mod branch;
 pub mod candidates;
 pub mod context;
 pub mod decide;

@@ -44,7 +44,9 @@ pub fn equivalent_places<'a>(
     };
     let place = |c: &Candidate| c.fixed.first().map(|(_, v)| v.clone());
     all.into_iter()
-        .filter(|c| c.effect == chosen.effect && place(c) != place(chosen))
+        // The same form of the effect (its parameter is the same quantity).
+        .filter(|c| c.effect == chosen.effect && c.param.key == chosen.param.key)
+        .filter(|c| place(c) != place(chosen))
         .filter(|c| {
             z_at(c).is_some_and(|z| {
                 z.iter()

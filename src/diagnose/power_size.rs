@@ -141,6 +141,7 @@ mod tests {
                 lo,
                 hi,
                 log: false,
+                resonance: false,
             },
             artifact_gains: None,
         }

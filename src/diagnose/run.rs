@@ -81,6 +81,10 @@ pub fn diagnose(
         .iter()
         .any(|r| matches!(r.regime, RunShape::LongRun { .. }));
     let mut list = candidates(model, &stations, long_run);
+    // The branch form of `unmodelled_mode`: a local mode hanging on any node.
+    if let Some(band) = super::branch::excited_band_hz(&cx.observed) {
+        list.extend(super::branch::branch_candidates(model, band));
+    }
     // A sensor artifact at a geared station leaks through the order analysis.
     let gains = sensor_gain::unit_gains(recordings, &cx.observed, options.max_order);
     sensor_gain::attach(&mut list, &gains);

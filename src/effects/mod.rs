@@ -9,6 +9,7 @@
 //! | [`effect`] | the effects by their spec identifiers, and the `key=value` parameters sizing one |
 //! | [`truth`] | [`build_truth`]: the user's model with parameter errors and one effect added |
 //! | [`rubber`] | rubber-stage effects: amplitude nonlinearity, frequency dependence, thermal drift |
+//! | [`branch`] | unmodelled mode, branch form: a local mode hanging on any node |
 //! | [`hysteretic`] | rate-independent (hysteretic) damping in place of a viscous equivalent |
 //! | [`structure`] | structure and engine: unmodelled mode, variable crank inertia, backlash, imbalance |
 //! | [`sensor`] | sensor artifacts: a zebra tape's butt joint, a once-per-revolution pitch error |
@@ -28,6 +29,7 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+pub mod branch;
 pub mod effect;
 pub mod hysteretic;
 pub mod param_error;

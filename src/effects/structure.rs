@@ -17,14 +17,34 @@ use std::f64::consts::TAU;
 /// `both`, half each, the default; or `from` or `to`, one end; ground gives none), so the
 /// total inertia is unchanged. The local mode of the middle node against held ends is
 /// `√((k_a + k_b)/J)/2π`.
+///
+/// `form` (default `split`) chooses this middle flange; `form = branch` is a local mode
+/// hanging on a node instead ([`super::branch::branch_mode`], its own keys).
 pub(crate) fn unmodelled_mode(
     model: &mut Model,
     spec: &EffectSpec,
 ) -> Result<Applied, EffectError> {
+    if spec.params.get("form").map(String::as_str) == Some("branch") {
+        return super::branch::branch_mode(model, spec);
+    }
     let mut p = Params::new(
         spec,
-        &["connection", "inertia_kg_m2", "split", "node", "take_from"],
+        &[
+            "connection",
+            "inertia_kg_m2",
+            "split",
+            "node",
+            "take_from",
+            "form",
+        ],
     )?;
+    // Resolved only when given, so that a split's parameters read as they always did.
+    if spec.params.contains_key("form") {
+        let form = p.text("form", None)?;
+        if form != "split" {
+            return Err(p.bad("form", format!("`{form}`: expected split or branch")));
+        }
+    }
     let first = model
         .connections
         .iter()
