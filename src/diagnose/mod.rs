@@ -80,6 +80,8 @@ mod tests;
 mod tests_guard;
 #[cfg(test)]
 mod tests_rejected;
+#[cfg(test)]
+mod tests_sensor_gain;
 pub mod trial;
 
 pub use html::report_html;
