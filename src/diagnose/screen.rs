@@ -81,36 +81,8 @@ fn runs_where(cx: &Context, keep: impl Fn(&RunShape) -> bool) -> Vec<bool> {
 
 /// Backlash can only act where the torque through the gear reverses: its vibratory
 /// torque (every engine order up to 24, summed) reaches this fraction of the mean torque
-/// in the linear model (the fraction leaves room for the linear model's error). The mean
-/// torque is the engine's less the drag of the nodes' absolute damping upstream at that
-/// speed ([`mean_through_torque`]).
+/// in the linear model (the fraction leaves room for the linear model's error).
 const REVERSAL_FRACTION: f64 = 0.8;
-
-/// The mean torque through connection `k` of `system` as `(T₀, D)`: `T₀ + D·Ω` N·m at
-/// reference speed Ω rad/s, the engine's mean torque `T₀` less the mean drag `c·Ω` of the
-/// nodes' absolute damping on its engine side (model-format.md: damping "to the frame").
-/// A gear behind a crank whose friction takes most of a part load's torque runs nearly
-/// unloaded, and its free play opens (issue 14: seed 8's part-load regime, 13.6 N·m of
-/// engine torque against 21.7 N·m of crank drag at 2080 rpm).
-pub(crate) fn mean_through_torque(
-    model: &crate::model::Model,
-    system: &crate::physics::System,
-    k: usize,
-) -> (f64, f64) {
-    let engine = system.mean_torque_nm[k].unwrap_or(0.0);
-    let per_rad_s = crate::physics::static_twist::drag_connection_torques_per_rad_s(model, system)
-        .ok()
-        .and_then(|t| {
-            system
-                .elements
-                .iter()
-                .zip(t)
-                .find(|(e, _)| e.connection == k)
-                .map(|(_, t)| t)
-        })
-        .unwrap_or(0.0);
-    (engine, per_rad_s)
-}
 
 /// The runs in which the linear model of `e` lets the torque in connection `name`
 /// reverse (at any speed of the run).
@@ -130,7 +102,7 @@ fn torque_reversal_runs(cx: &Context, e: &Evaluated, name: &str) -> Vec<bool> {
             let Some(system) = causal_system(&e.model, run.load, [lo, hi]) else {
                 return false;
             };
-            let (engine_nm, drag_per_rad_s) = mean_through_torque(&e.model, &system, k);
+            let mean = system.mean_torque_nm[k].unwrap_or(0.0).abs();
             let excitation = Excitation::new(&e.model, &system, run.load, &orders);
             let Ok(response) = forced_response_orders(&system, &excitation, &speeds) else {
                 return false;
@@ -140,8 +112,6 @@ fn torque_reversal_runs(cx: &Context, e: &Evaluated, name: &str) -> Vec<bool> {
             };
             (0..speeds.len()).any(|s| {
                 let vibratory: f64 = response.torque_amplitude_nm[j].iter().map(|q| q[s]).sum();
-                let omega_rad_s = speeds[s] * std::f64::consts::TAU / 60.0;
-                let mean = (engine_nm + drag_per_rad_s * omega_rad_s).abs();
                 vibratory >= REVERSAL_FRACTION * mean
             })
         })

@@ -24,59 +24,17 @@ pub fn static_connection_torques(model: &Model, system: &System) -> Result<Vec<f
             }
         }
     }
-    through_torques(model, system, torque)
-}
-
-/// Mean torque through each element (in element order, own shaft, N·m, positive when
-/// `from` drives `to`) per rad/s of the reference speed, from the nodes' absolute damping
-/// alone: the drag `c·Ω` that model-format.md's "absolute damping to the frame" takes at
-/// every node but the load's (which the load itself supplies). At reference speed Ω the
-/// mean torque through element `e` is `static_connection_torques[e] + Ω·this[e]`; a
-/// gear mesh whose upstream drag eats the engine's mean torque runs unloaded (issue 14:
-/// whether backlash opens). Zero without a load to hold the drag.
-pub fn drag_connection_torques_per_rad_s(
-    model: &Model,
-    system: &System,
-) -> Result<Vec<f64>, PhysicsError> {
-    let n = system.dof_count();
-    let Some(held) = held_dof(model, system) else {
+    if torque.iter().all(|t| *t == 0.0) {
         return Ok(vec![0.0; system.elements.len()]);
-    };
-    let torque = DVector::<f64>::from_fn(n, |i, _| {
-        if i == held {
-            0.0
-        } else {
-            -system.absolute_damping_nm_s_per_rad[i]
-        }
-    });
-    through_torques(model, system, torque)
-}
-
-/// The DOF the load holds (the load node), if any: a grounded model without `[load]`
-/// lets the ground hold the torque.
-fn held_dof(model: &Model, system: &System) -> Option<usize> {
-    if model.load.is_some() || !model.is_grounded() {
+    }
+    let held = if model.load.is_some() || !model.is_grounded() {
         model
             .load_node()
             .and_then(|name| model.node_index(name))
             .map(|node| system.dof_of_node[node])
     } else {
         None
-    }
-}
-
-/// Mean torque through each element under the static DOF torques `torque` (referred,
-/// N·m), the load node held.
-fn through_torques(
-    model: &Model,
-    system: &System,
-    mut torque: DVector<f64>,
-) -> Result<Vec<f64>, PhysicsError> {
-    let n = system.dof_count();
-    if torque.iter().all(|t| *t == 0.0) {
-        return Ok(vec![0.0; system.elements.len()]);
-    }
-    let held = held_dof(model, system);
+    };
     let mut k = DMatrix::<f64>::zeros(n, n);
     for e in &system.elements {
         let (stiffness, _) = e.stiffness_at(0.0);
@@ -142,7 +100,7 @@ fn unheld(system: &System, k: &DMatrix<f64>, u: &DMatrix<f64>) -> PhysicsError {
 
 #[cfg(test)]
 mod tests {
-    use super::{drag_connection_torques_per_rad_s, static_connection_torques};
+    use super::static_connection_torques;
     use crate::physics::{ElementLaw, OperatingPoint, System};
 
     /// a —shaft— b —shaft— c, engine at a, load at c; the shaft b–c then cut (stiffness
@@ -197,56 +155,6 @@ at = "c"
         assert!(
             e.contains("node `b` (with what is joined to it) is held neither by the load"),
             "{e}"
-        );
-    }
-
-    /// The drag of absolute damping flows to the load: a (0.5) and b (0.25 N·m·s/rad)
-    /// drag, load at c: a–b carries a's drag, b–c both; the load's own damping is its
-    /// own (it never passes a connection). Exact for a chain (statically determinate).
-    #[test]
-    fn absolute_damping_drag_flows_through_the_connections_to_the_load() {
-        let text = r#"format = 1
-name = "t"
-[[inertia]]
-name = "a"
-inertia = 1.0
-damping = 0.5
-[[inertia]]
-name = "b"
-inertia = 1.0
-damping = 0.25
-[[inertia]]
-name = "c"
-inertia = 1.0
-damping = 7.0
-[[connection]]
-kind = "shaft"
-from = "a"
-to = "b"
-stiffness = 1000.0
-[[connection]]
-kind = "shaft"
-from = "b"
-to = "c"
-stiffness = 3000.0
-[[harmonic]]
-at = "a"
-order = 1
-amplitude = 1.0
-phase_deg = 0
-[load]
-at = "c"
-"#;
-        let model = crate::model::parse_model(text, "t.toml").unwrap();
-        let point = OperatingPoint {
-            load: 1.0,
-            temperature_c: None,
-        };
-        let system = System::new(&model, point).unwrap();
-        let d = drag_connection_torques_per_rad_s(&model, &system).unwrap();
-        assert!(
-            (d[0] + 0.5).abs() < 1e-12 && (d[1] + 0.75).abs() < 1e-12,
-            "{d:?}"
         );
     }
 }

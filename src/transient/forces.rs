@@ -86,18 +86,8 @@ impl Plant {
         let (phi_m, big_omega, alpha) = profile.at(t);
         mass.copy_from_slice(&self.inertia_kg_m2);
         dy[..n].copy_from_slice(&y[n..2 * n]);
-        // Absolute damping to the frame (model-format.md) also drags the mean rotation:
-        // `c·Ω` at every node but the load's, which the governor supplies with the mean
-        // torque, so a gear downstream of a dragged node carries less (issue 14).
-        let drag_dof = self.governor.map(|g| g.dof);
-        let mut drag_nm = 0.0;
         for i in 0..n {
-            let mean_drag = match drag_dof {
-                Some(g) if g != i => self.damping_nm_s_per_rad[i] * big_omega,
-                _ => 0.0,
-            };
-            drag_nm += mean_drag;
-            dy[n + i] = -self.damping_nm_s_per_rad[i] * y[n + i] - mean_drag;
+            dy[n + i] = -self.damping_nm_s_per_rad[i] * y[n + i];
         }
         for e in &self.elements {
             let s = self.element_state(e, y, Some(dy));
@@ -173,9 +163,8 @@ impl Plant {
         }
         if let Some(g) = &self.governor {
             let mean = self.engine.as_ref().map_or(0.0, |e| e.mean_torque_nm);
-            dy[n + g.dof] += -mean + drag_nm + g.total_inertia_kg_m2 * alpha
-                - g.kp * y[n + g.dof]
-                - g.ki * y[g.dof];
+            dy[n + g.dof] +=
+                -mean + g.total_inertia_kg_m2 * alpha - g.kp * y[n + g.dof] - g.ki * y[g.dof];
         }
         for i in 0..n {
             dy[n + i] = dy[n + i] / mass[i] - alpha;

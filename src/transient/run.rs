@@ -178,7 +178,7 @@ pub fn simulate_observed(
     let cycle_rad = plant.engine.as_ref().map_or(2.0 * TAU, |e| e.cycle_rad);
     let mut profile = SpeedProfile::steady(from_rpm);
     let mut mass = vec![0.0; plant.n_dof];
-    let y0 = initial_state(&plant, from_rpm * TAU / 60.0)?;
+    let y0 = initial_state(&plant)?;
     let atol = tolerances(&plant);
     let cycle_s = |rpm: f64| cycle_rad / (rpm * TAU / 60.0);
     let h_max = cycle_s(from_rpm.max(to_rpm)) / options.min_steps_per_cycle.max(1.0);
