@@ -389,6 +389,7 @@ pub fn draw_case(seed: u64, class: Option<&str>) -> Result<Case, String> {
                 HystereticLaw::Dahl {
                     f_c_nm: 0.0,
                     sigma_nm_per_rad: 3.0 * k,
+                    twist_rate_rad_s: 0.0,
                 }
             };
             effect = Effect::Hysteretic { conn: c, law };

@@ -83,8 +83,17 @@ pub struct Thermal {
 pub enum HystereticLaw {
     /// Structural: constant loss factor ξ over the band (causal bank, `visco.rs`).
     Structural,
-    /// Dahl friction: dF/dt = σ·Δθ̇·(1 − F/F_c·sgn Δθ̇), beside the spring.
-    Dahl { f_c_nm: f64, sigma_nm_per_rad: f64 },
+    /// Dahl friction: dF/dt = σ·Δθ̇·(1 − F/F_c·sgn Δθ̇), beside the spring. σ (N·m/rad)
+    /// is the contact's stiffness before sliding, a multiple of the spring's; F_c (N·m)
+    /// the sliding torque, sized from the twist amplitude (`sizing.rs`); the state relaxes
+    /// at σ·|Δθ̇|/F_c (1/s), which the RK4 step must resolve: `twist_rate_rad_s` is the
+    /// twist rate amplitude the sizing pre-run measured (0 until sized), from which the
+    /// plant bounds that rate (`plant.rs`, `DAHL_RATE_MARGIN`).
+    Dahl {
+        f_c_nm: f64,
+        sigma_nm_per_rad: f64,
+        twist_rate_rad_s: f64,
+    },
 }
 
 /// Smooth free play in a gear mesh (half play h at the `to` side, rad).

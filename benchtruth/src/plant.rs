@@ -17,6 +17,12 @@ const CONTROL_BANDWIDTH_HZ: f64 = 0.2;
 /// Corner of the low-pass on the speed error of the loop's proportional part, Hz.
 const CONTROL_FILTER_HZ: f64 = 1.0;
 
+/// Bound on a Dahl state's relaxation rate σ·|Δθ̇|/F_c over its value at the sizing
+/// pre-run's twist rate amplitude: the RK4 step (at most 0.5/rate, `sim.rs`) then stays
+/// stable (λh < 2.78) up to 5.6× this margin, 17× the sized twist rate, which covers a
+/// run-up through resonance and the start from the static twist.
+const DAHL_RATE_MARGIN: f64 = 3.0;
+
 /// A connection's law in the truth.
 #[derive(Debug, Clone)]
 enum Link {
@@ -144,8 +150,15 @@ impl Plant {
                                 HystereticLaw::Dahl {
                                     f_c_nm,
                                     sigma_nm_per_rad,
+                                    twist_rate_rad_s,
                                 },
                         } if *conn == i => {
+                            // The friction state relaxes at σ·|Δθ̇|/F_c: bounded from the
+                            // sized twist rate with a margin for resonances and the start.
+                            fastest = fastest.max(
+                                DAHL_RATE_MARGIN * sigma_nm_per_rad * twist_rate_rad_s
+                                    / f_c_nm.max(f64::MIN_POSITIVE),
+                            );
                             let l = Link::Dahl {
                                 k: stiffness,
                                 fc: *f_c_nm,

@@ -10,7 +10,8 @@ use std::f64::consts::TAU;
 
 /// The RK4 step: at most 1/40 of the shortest natural period (rubbers counted 4× stiffer
 /// to cover friction and amplitude stiffening), at most 0.5/λ_max of the fastest Maxwell
-/// branch, and an integer fraction of the sample interval.
+/// branch or Dahl friction state (`plant.rs`, `DAHL_RATE_MARGIN`), and an integer
+/// fraction of the sample interval.
 pub fn step_s(truth: &Driveline, plant: &Plant, sample_s: f64) -> f64 {
     let mut stiff = truth.clone();
     for c in &mut stiff.connections {

@@ -19,7 +19,7 @@ pub fn size_effect(case: &mut Case, rng: &mut Rng) {
                 .find(|r| r.stem == "long-run")
                 .cloned();
             let Some(rec) = rec else { return };
-            let (loss_w, _) = pre_run(case, conn, &rec);
+            let loss_w = pre_run(case, conn, &rec).loss_w;
             let drop = rng.range(0.03, 0.08);
             let dt_k = match law.softening {
                 Softening::Exponential { beta_per_k } => -(1.0 - drop).ln() / beta_per_k,
@@ -46,19 +46,27 @@ pub fn size_effect(case: &mut Case, rng: &mut Rng) {
             },
         } => {
             let rec = case.campaign.recordings[case.campaign.recordings.len() / 2].clone();
-            let (_, amp) = pre_run(case, conn, &rec);
+            let PreRun {
+                twist_amplitude_rad: amp,
+                twist_rate_rad_s,
+                ..
+            } = pre_run(case, conn, &rec);
             let (k, psi) = match case.truth.connections[conn].kind {
                 crate::driveline::Kind::Rubber { stiffness, psi } => (stiffness, psi),
                 _ => (1.0, 1.0),
             };
             // Coulomb loss 4·F_c·A per cycle = ψ·½kA² (DIN 740's relative damping).
-            let f_c = (psi * k * amp / 8.0).max(1e-3);
+            // The sliding torque is floored at 1 % of the spring's torque at that
+            // amplitude (an unsized or vanishing Coulomb term would make the state's
+            // relaxation rate σ·|Δθ̇|/F_c unbounded: seed 16 diverged at t = 0).
+            let f_c = (psi * k * amp / 8.0).max(0.01 * k * amp).max(1e-3);
             case.params.push(("friction_nm".into(), f_c));
             case.effect = Effect::Hysteretic {
                 conn,
                 law: HystereticLaw::Dahl {
                     f_c_nm: f_c,
                     sigma_nm_per_rad,
+                    twist_rate_rad_s,
                 },
             };
         }
@@ -66,9 +74,19 @@ pub fn size_effect(case: &mut Case, rng: &mut Rng) {
     }
 }
 
-/// Mean rubber loss power (W) and twist amplitude (rad, √2·RMS about the mean) of
-/// connection `conn` over a 1 s run without the effect.
-fn pre_run(case: &Case, conn: usize, rec: &crate::campaign::Recording) -> (f64, f64) {
+/// What the pre-run without the effect measures at one connection.
+struct PreRun {
+    /// Mean rubber loss power, W.
+    loss_w: f64,
+    /// Twist amplitude, rad (√2·RMS about the mean).
+    twist_amplitude_rad: f64,
+    /// Twist rate amplitude, rad/s (√2·RMS).
+    twist_rate_rad_s: f64,
+}
+
+/// Loss power, twist amplitude and twist rate amplitude of connection `conn` over a 1 s
+/// run without the effect.
+fn pre_run(case: &Case, conn: usize, rec: &crate::campaign::Recording) -> PreRun {
     let mut plain = case.clone();
     plain.effect = Effect::None;
     let short = crate::campaign::Recording {
@@ -80,14 +98,67 @@ fn pre_run(case: &Case, conn: usize, rec: &crate::campaign::Recording) -> (f64, 
     let plant = sim::plant_for(&plain, &short);
     let c = &case.truth.connections[conn];
     let (from, to, g) = (c.from, c.to, c.lever());
-    let (mut p, mut s1, mut s2, mut n) = (0.0, 0.0, 0.0, 0.0);
+    let n_nodes = case.truth.nodes.len();
+    let (mut p, mut s1, mut s2, mut r2, mut n) = (0.0, 0.0, 0.0, 0.0, 0.0);
     sim::run(&case.truth, &plant, 2000.0, |_, y| {
         p += plant.rubber_loss_w(y);
         let d = g * y[from] - y[to];
+        let dd = g * y[n_nodes + from] - y[n_nodes + to];
         s1 += d;
         s2 += d * d;
+        r2 += dd * dd;
         n += 1.0;
     });
     let var = (s2 / n - (s1 / n).powi(2)).max(0.0);
-    (p / n, (2.0 * var).sqrt())
+    PreRun {
+        loss_w: p / n,
+        twist_amplitude_rad: (2.0 * var).sqrt(),
+        twist_rate_rad_s: (2.0 * r2 / n).sqrt(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::effects::{Effect, HystereticLaw};
+    use crate::sim;
+
+    /// Seed 16 (Dahl friction) diverged at the start of `regime-b` while the RK4 step
+    /// ignored the friction state's relaxation rate σ·|Δθ̇|/F_c. Sized now, the plant's
+    /// step resolves it (the rate bound is in `fastest_rate`) and the run stays finite.
+    #[test]
+    fn a_sized_dahl_friction_is_integrated_stably() {
+        let case = crate::draw::draw_case(16, None).unwrap();
+        let Effect::Hysteretic {
+            law:
+                HystereticLaw::Dahl {
+                    f_c_nm,
+                    sigma_nm_per_rad,
+                    twist_rate_rad_s,
+                },
+            ..
+        } = case.effect
+        else {
+            panic!("seed 16 draws Dahl friction: {:?}", case.effect);
+        };
+        assert!(f_c_nm > 0.0 && twist_rate_rad_s > 0.0);
+        let rec = case
+            .campaign
+            .recordings
+            .iter()
+            .find(|r| r.stem == "regime-b")
+            .unwrap();
+        let short = crate::campaign::Recording {
+            duration_s: 0.2,
+            ..rec.clone()
+        };
+        let plant = sim::plant_for(&case, &short);
+        // The bound: the margin times the sized rate (to rounding).
+        let rate = sigma_nm_per_rad * twist_rate_rad_s / f_c_nm;
+        assert!(plant.fastest_rate >= 3.0 * rate * (1.0 - 1e-12));
+        let mut finite = true;
+        sim::run(&case.truth, &plant, 2000.0, |_, y| {
+            finite &= y.iter().all(|v| v.is_finite())
+        });
+        assert!(finite);
+    }
 }
