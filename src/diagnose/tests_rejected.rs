@@ -84,11 +84,18 @@ fn a_failing_candidate_is_rejected_and_the_diagnosis_goes_on() {
         );
         assert!(!r.verified);
     }
+    // Every unmodelled mode that reached the time domain failed there and says why; the
+    // branch form's rows at other nodes may stop at the linear screening (only the best
+    // form is verified), and then have nothing to report but stay unverified.
     let mode = rows("unmodelled_mode");
-    assert!(!mode.is_empty(), "{table:?}");
+    let says = |r: &&super::report::Candidate| {
+        r.rejected
+            .iter()
+            .chain(&r.rejected_steps)
+            .any(|w| w.contains(message))
+    };
+    assert!(mode.iter().any(says), "{table:?}");
     for r in mode {
-        let said = r.rejected.iter().chain(&r.rejected_steps);
-        assert!(said.into_iter().any(|w| w.contains(message)), "{table:?}");
         assert!(!r.verified, "{table:?}");
     }
     let json = serde_json::to_string(&report).expect("json");
