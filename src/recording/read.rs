@@ -229,6 +229,23 @@ pub fn parse_recording_with(
     if !timing.is_uniform() {
         let mut columns: Vec<&mut Vec<f64>> = channels.iter_mut().map(|c| &mut c.values).collect();
         let grid = timing::regularize(&time_s, &timing, &mut columns);
+        // The cubic through a sample far off its neighbours (a dropout to 34 rpm amid
+        // 4430 rpm, which the bad-sample rule lets pass) can overshoot below 0 rpm between
+        // them: what the reader returns must pass the same check as what it read (the
+        // recording fuzzer's crash 2ac8a006: −184 rpm written, refused on reading back).
+        let overshoot = bad_samples::find(&channels, timing.dt_s);
+        if let Some(b) = overshoot.iter().min_by_key(|b| b.row) {
+            let column = channels[b.channel].column.clone();
+            let e = RecordingError::new(
+                file,
+                Reason::BadSamples(format!(
+                    "resampling the jittered time stamps onto a uniform grid gives `{column}`                      = {:.1} rpm near this line: a sample here is far off its neighbours;                      correct or remove it",
+                    b.value
+                )),
+            );
+            let line = table.lines.get(b.row).copied().unwrap_or(table.header_line);
+            return Err(e.at_line(line).at_key(&column));
+        }
         notes.push(format!(
             "{file}: time stamps scatter by up to {:.3} µs ({:.1} % of a step, beyond the \
              printed resolution): resampled onto the uniform {:.3} µs grid (cubic)",
