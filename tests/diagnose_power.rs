@@ -74,8 +74,10 @@ fn diagnose_case(model: &Model, key: &str, value: f64, effect: Effect) -> String
     let spec = EffectSpec::new(effect).with(key, value);
     let truth = build_truth(model, &spec, 0.0, 3).expect("truth");
     let plan = Plan::default_for(model, PlanDurations::default()).expect("plan");
+    // White noise only, as the power analysis assumes (see the check below).
     let measurement = Measurement {
         stations: torsim::synth::Station::defaults(model),
+        jitter_ns: 0.0,
         ..Measurement::default()
     };
     let recs = generate(&truth, &plan, &measurement, &mut |_| true).expect("generated");
@@ -96,34 +98,77 @@ fn diagnose_case(model: &Model, key: &str, value: f64, effect: Effect) -> String
     report.verdict.effect
 }
 
-/// The check against full diagnoses (slow: four campaigns): cylinder imbalance at twice
-/// its detectable size is named; at 0.3 times it is not.
-#[test]
-#[ignore]
-fn full_diagnoses_agree_with_the_detectable_size() {
-    let model = bench_model();
-    let plan = Plan::default_for(&model, PlanDurations::default()).expect("plan");
-    let bench = Bench::default_for(&model);
-    let report = power(&model, &plan, &bench, 2, &mut |_, _| true).expect("analysis");
+/// The named size of `effect` at `place` on the default plan.
+fn named_size(model: &Model, effect: &str, place: &str) -> f64 {
+    let plan = Plan::default_for(model, PlanDurations::default()).expect("plan");
+    let mut bench = Bench::default_for(model);
+    bench.jitter_ns = 0.0;
+    let report = power(model, &plan, &bench, 2, &mut |_, _| true).expect("analysis");
     let row = report
         .effects
         .iter()
-        .find(|e| e.effect == "cylinder_imbalance" && e.place == "cylinder 1")
-        .expect("cylinder 1");
-    let s = row.detectable_size.expect("detectable");
-    let big = diagnose_case(
-        &model,
-        "pressure_scale",
-        1.0 - 2.0 * s,
-        Effect::CylinderImbalance,
-    );
-    let small = diagnose_case(
-        &model,
-        "pressure_scale",
-        1.0 - 0.3 * s,
-        Effect::CylinderImbalance,
-    );
-    eprintln!("detectable {s}: 2× → {big}, 0.3× → {small}");
-    assert_eq!(big, "cylinder_imbalance");
-    assert!(small == "none" || small == "parameter_error", "{small}");
+        .find(|e| e.effect == effect && e.place == place)
+        .expect("row");
+    row.named_size.expect("named within bounds")
+}
+
+/// The check against full diagnoses (issue 14, item 6; slow: three campaigns, ~2 min in
+/// the test profile): at twice its *named* size ([`torsim::diagnose::power_named`]) an
+/// effect is named; at 0.3 times the surrogate's effect is not (see below). The named
+/// size, not the detectable one, is what a verdict needs: the diagnosis asks for a
+/// held-out misfit above twice the noise and a margin over the plain fit, 5–10 times
+/// the size of λ ≥ 7.85 on this campaign (cylinder 1: 3.6e-4 against 7.0e-5).
+/// Two effects: one the surrogate evaluates (cylinder imbalance) and one only the time
+/// domain does (thermal drift, on the long run). The bench has white noise only: pulse
+/// timing jitter makes a speed's noise rise with frequency (it is the derivative of an
+/// angle noise), which the analysis' one σ per station does not model; with the default
+/// 20 ns the crank encoder's order amplitudes are 3–4 times noisier than it assumes
+/// (σ 0.0087 rpm measured against 0.0031 rpm), and a right model reads χ²/N = 1.56
+/// instead of 0.84.
+/// An effect's name, place, kind, parameter key and size-to-parameter map.
+type Case = (
+    &'static str,
+    &'static str,
+    Effect,
+    &'static str,
+    fn(f64) -> f64,
+);
+
+#[test]
+fn full_diagnoses_agree_with_the_named_size() {
+    let model = bench_model();
+    let cases: [Case; 2] = [
+        (
+            "cylinder_imbalance",
+            "cylinder 1",
+            Effect::CylinderImbalance,
+            "pressure_scale",
+            |s| 1.0 - s,
+        ),
+        (
+            "coupling_thermal_drift",
+            "coupling",
+            Effect::CouplingThermalDrift,
+            "capacity_j_per_k",
+            |s| 1.0 / s,
+        ),
+    ];
+    for (k, (name, place, effect, key, value)) in cases.into_iter().enumerate() {
+        let s = named_size(&model, name, place);
+        let big = diagnose_case(&model, key, value(2.0 * s), effect);
+        eprintln!("{name}: named from {s}: 2× → {big}");
+        assert_eq!(big, name);
+        // The surrogate's effect is not named at 0.3×. Thermal drift's signature is
+        // simulated on the long run only (`power_eval`), so its named size is an upper
+        // bound: measured, it is still named at 0.3× (332 J/K against 99.5 J/K named),
+        // and that side is not asserted.
+        if k == 0 {
+            let small = diagnose_case(&model, key, value(0.3 * s), effect);
+            eprintln!("{name}: 0.3× → {small}");
+            assert!(
+                small == "none" || small == "parameter_error",
+                "{name}: {small}"
+            );
+        }
+    }
 }

@@ -11,6 +11,7 @@ use super::format::{emit, outln, print_json, table};
 use super::input::{PRESET_PREFIX, load_model};
 use super::progress::Progress;
 use std::path::{Path, PathBuf};
+use torsim::diagnose::labels::{label_of, unique_labels};
 use torsim::diagnose::report::ParameterValue;
 use torsim::diagnose::{
     DiagnoseError, DiagnoseOptions, LabelledRecording, Report, diagnose, report_html,
@@ -126,21 +127,14 @@ fn read_all(
             eprintln!("note: {note}");
         }
         let recording = read.recording;
-        let stem = file
-            .file_stem()
-            .map_or_else(|| path.clone(), |s| s.to_string_lossy().into_owned());
-        let label = recording.meta.label.clone().unwrap_or(stem);
+        let label = label_of(file, &recording);
         recordings.push(LabelledRecording { label, recording });
     }
-    // Labels name recordings in the report: make repeated ones unique by their file.
+    // Labels name recordings in the report: repeated ones take their file names.
     let labels: Vec<String> = recordings.iter().map(|r| r.label.clone()).collect();
-    for (r, path) in recordings.iter_mut().zip(paths) {
-        if labels.iter().filter(|l| **l == r.label).count() > 1 {
-            let name = Path::new(path)
-                .file_name()
-                .map_or_else(|| path.clone(), |n| n.to_string_lossy().into_owned());
-            r.label = format!("{} ({name})", r.label);
-        }
+    let files: Vec<&Path> = paths.iter().map(Path::new).collect();
+    for (r, label) in recordings.iter_mut().zip(unique_labels(&labels, &files)) {
+        r.label = label;
     }
     Ok(recordings)
 }

@@ -13,8 +13,10 @@
 //!    ([`super::power_add`]).
 
 use super::candidates::{Candidate, candidates};
+use super::holdout::held_out;
 use super::power_eval::{Evaluator, in_time_domain};
 use super::power_fisher::{LAMBDA_DETECT, projected_lambda};
+use super::power_named::Rule;
 use super::power_plan::{Bench, planned};
 use super::power_size::{EffectSize, SizeLaw, effect_size};
 use super::{DiagnoseError, observe::RunShape};
@@ -52,6 +54,13 @@ pub struct EffectPower {
     pub lambda_typical_raw: f64,
     /// Detectable at its typical size (λ ≥ 7.85).
     pub detectable: bool,
+    /// The smallest size the diagnosis' decision rule names it at on this campaign's
+    /// held-out amplitudes ([`super::power_named`]); larger than the detectable size,
+    /// since the verdict asks for a misfit above twice the noise and a margin over the
+    /// plain recalibration (`None`: not within the candidate's bounds).
+    pub named_size: Option<f64>,
+    /// The named size over the typical one.
+    pub named_relative: Option<f64>,
     /// `"surrogate"` or `"time domain"`.
     pub evaluated_by: String,
 }
@@ -202,6 +211,8 @@ pub fn analyse_candidate(ev: &Evaluator, c: &Candidate) -> Option<Analysed> {
     let lambda_typical = projected_lambda(&typical, &ev.weights, &plain);
     let lambda_raw = projected_lambda(&typical, &ev.weights, &[]);
     let detectable = detectable_size(&points).filter(|s| *s <= size.max * (1.0 + 1e-9));
+    let named =
+        named_size(ev, c, &signatures, size.typical).filter(|s| *s <= size.max * (1.0 + 1e-9));
     let parameter = detectable.map_or_else(
         || {
             format!(
@@ -223,6 +234,8 @@ pub fn analyse_candidate(ev: &Evaluator, c: &Candidate) -> Option<Analysed> {
         lambda_typical,
         lambda_typical_raw: lambda_raw,
         detectable: lambda_typical >= LAMBDA_DETECT,
+        named_size: named,
+        named_relative: named.map(|s| s / size.typical),
         evaluated_by: if in_time_domain(c.effect) {
             "time domain"
         } else {
@@ -236,6 +249,36 @@ pub fn analyse_candidate(ev: &Evaluator, c: &Candidate) -> Option<Analysed> {
         signatures,
         row,
     })
+}
+
+/// The smallest size the decision rule names `c` at ([`super::power_named`]): solved
+/// from the signature evaluated nearest to it (signatures are nearly linear in the size
+/// between grid points a factor 2 apart), from the typical size on.
+fn named_size(
+    ev: &Evaluator,
+    c: &Candidate,
+    signatures: &[(f64, Vec<f64>)],
+    typical: f64,
+) -> Option<f64> {
+    let rule = Rule {
+        held: held_out(&ev.observed),
+        k_plain: ev.plain.len(),
+        effect_margin: super::branch::margin(c),
+    };
+    let plain = ev.plain_columns();
+    let solve = |(s0, d): &(f64, Vec<f64>)| rule.factor(d, &ev.weights, &plain).map(|t| s0 * t);
+    let nearest = |s: f64| {
+        signatures
+            .iter()
+            .min_by(|a, b| (a.0 / s).ln().abs().total_cmp(&(b.0 / s).ln().abs()))
+    };
+    let mut s = solve(nearest(typical)?)?;
+    // Two refinements on the evaluated grid (the grid is a factor 2; a third changes
+    // nothing where the signature is smooth).
+    for _ in 0..2 {
+        s = solve(nearest(s)?)?;
+    }
+    Some(s)
 }
 
 /// The candidate's parameter at size `s`, 4 significant digits.

@@ -6,6 +6,7 @@
 use crossbeam_channel::{Receiver, bounded};
 use std::path::{Path, PathBuf};
 use torsim::diagnose::LabelledRecording;
+use torsim::diagnose::labels::label_of;
 use torsim::recording::{RunShape, classify, read_recording};
 
 /// A recording in the diagnosis list.
@@ -13,8 +14,12 @@ use torsim::recording::{RunShape, classify, read_recording};
 pub struct LoadedRecording {
     /// The CSV file.
     pub path: PathBuf,
-    /// The recording with its label (sidecar `label`, else the file stem).
+    /// The recording with the label the report shows: its own
+    /// ([`torsim::diagnose::labels::label_of`]), with the file name added when another
+    /// recording in the list has the same one ([`torsim::diagnose::labels::unique_labels`]).
     pub labelled: LabelledRecording,
+    /// Its own label: sidecar `label`, else the file stem.
+    pub own_label: String,
     /// Steady, long run or ramp with its speeds, by the classifier the diagnosis uses
     /// ([`torsim::recording::classify`]); shown as its [`RunShape::label`].
     pub shape: RunShape,
@@ -43,20 +48,17 @@ pub type Loaded = (Vec<LoadedRecording>, Vec<String>);
 /// Reads one recording and describes it.
 pub fn read_one(path: &Path, nodes: &[String]) -> Result<LoadedRecording, String> {
     let recording = read_recording(path, Some(nodes)).map_err(|e| e.to_string())?;
-    let stem = path.file_stem().map_or_else(
-        || path.display().to_string(),
-        |s| s.to_string_lossy().into_owned(),
-    );
+    let label = label_of(path, &recording);
     let meta = &recording.meta;
     let duration_s = match (recording.time_s.first(), recording.time_s.last()) {
         (Some(a), Some(b)) => b - a,
         _ => 0.0,
     };
     let shape = classify(&recording);
-    let label = meta.label.clone().unwrap_or(stem);
     let load = meta.load;
     Ok(LoadedRecording {
         path: path.to_path_buf(),
+        own_label: label.clone(),
         labelled: LabelledRecording { label, recording },
         shape,
         load,
@@ -125,17 +127,4 @@ pub fn start(
         })
         .map(|_| rx)
         .map_err(|e| format!("cannot start reading the recordings: {e}"))
-}
-
-/// Labels name recordings in the report: a label already taken gets its file name added.
-pub fn unique_label(label: &str, path: &Path, taken: &[&str]) -> String {
-    if taken.contains(&label) {
-        let name = path.file_name().map_or_else(
-            || path.display().to_string(),
-            |n| n.to_string_lossy().into_owned(),
-        );
-        format!("{label} ({name})")
-    } else {
-        label.to_string()
-    }
 }

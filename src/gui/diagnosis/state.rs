@@ -62,6 +62,23 @@ impl DiagnosisState {
     pub fn remove(&mut self, index: usize) {
         if index < self.recordings.len() {
             self.recordings.remove(index);
+            self.relabel();
+        }
+    }
+
+    /// The labels the report shows: the one rule of the CLI
+    /// ([`torsim::diagnose::labels::unique_labels`]), over the whole list.
+    fn relabel(&mut self) {
+        let own: Vec<String> = self
+            .recordings
+            .iter()
+            .map(|r| r.own_label.clone())
+            .collect();
+        let paths: Vec<&std::path::Path> =
+            self.recordings.iter().map(|r| r.path.as_path()).collect();
+        let labels = torsim::diagnose::labels::unique_labels(&own, &paths);
+        for (r, label) in self.recordings.iter_mut().zip(labels) {
+            r.labelled.label = label;
         }
     }
 
@@ -100,15 +117,8 @@ impl DiagnosisState {
                 Ok((added, errors)) => {
                     self.loading = None;
                     self.load_errors = errors;
-                    for mut r in added {
-                        let taken: Vec<&str> = self
-                            .recordings
-                            .iter()
-                            .map(|x| x.labelled.label.as_str())
-                            .collect();
-                        r.labelled.label = load::unique_label(&r.labelled.label, &r.path, &taken);
-                        self.recordings.push(r);
-                    }
+                    self.recordings.extend(added);
+                    self.relabel();
                 }
                 Err(TryRecvError::Empty) => {}
                 Err(TryRecvError::Disconnected) => {
