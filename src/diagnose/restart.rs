@@ -60,11 +60,26 @@ pub fn second_starts(
         .collect();
     // Each candidate's fit from the user's values on its own, side by side
     // ([`super::parallel`]), taken in the list's order.
+    let mut finished = 0usize;
     let fits = parallel::map_reporting(
         linear.len(),
         cx.options.threads,
-        &|k| cx.propose_within(baseline, Some(&screened[linear[k]].candidate), &all, ITERATIONS),
-        &mut |k| progress(k, linear.len(), &screened[linear[k]].candidate.name()),
+        &|k| {
+            cx.propose_within(
+                baseline,
+                Some(&screened[linear[k]].candidate),
+                &all,
+                ITERATIONS,
+            )
+        },
+        &mut |k| {
+            finished += 1;
+            progress(
+                finished,
+                linear.len(),
+                &screened[linear[k]].candidate.name(),
+            )
+        },
     )?;
     let mut proposals: Vec<(usize, Evaluated, f64)> = Vec::new();
     for (i, fit) in linear.iter().zip(fits) {

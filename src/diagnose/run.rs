@@ -145,7 +145,7 @@ pub fn diagnose(
             &mut |k, n, name| {
                 step(
                     0.5 + 0.1 * k as f64 / n.max(1) as f64,
-                    &format!("screening {name} from the user's values"),
+                    &format!("screened {name} from the user's values"),
                 )
             },
         )?;
@@ -158,7 +158,7 @@ pub fn diagnose(
             &mut |k, n, name| {
                 step(
                     0.6 + 0.3 * k as f64 / n.max(1) as f64,
-                    &format!("verifying {name}"),
+                    &format!("verified {name}"),
                 )
             },
         )?;

@@ -242,7 +242,11 @@ pub fn verify(
         &|k| verify_one(cx, plain, &screened[chosen[k]]),
         &mut |k| {
             finished += 1;
-            progress(finished, chosen.len(), &screened[chosen[k]].candidate.name())
+            progress(
+                finished,
+                chosen.len(),
+                &screened[chosen[k]].candidate.name(),
+            )
         },
     )?;
     for (i, result) in chosen.iter().zip(results) {
