@@ -4,7 +4,8 @@
 use indicatif::{ProgressBar, ProgressStyle};
 use std::io::IsTerminal;
 
-/// A bar over 0–1 with a message, or nothing when stderr is not a terminal.
+/// A bar over 0–1 with a message (cut to the terminal's width, so the bar stays on one
+/// line), or nothing when stderr is not a terminal.
 pub struct Progress {
     bar: Option<ProgressBar>,
 }
@@ -15,12 +16,15 @@ impl Progress {
         let bar = std::io::stderr().is_terminal().then(|| {
             let bar = ProgressBar::new(1000);
             let style = ProgressStyle::with_template(
-                "{msg} [{bar:40}] {percent:>3}% {elapsed_precise} (ETA {eta})",
+                "{spinner} [{bar:30}] {percent:>3}% {elapsed_precise} (ETA {eta}) {wide_msg}",
             )
             .map(|s| s.progress_chars("=> "))
             .unwrap_or_else(|_| ProgressStyle::default_bar());
             bar.set_style(style);
             bar.set_message(message.to_string());
+            // Redrawn every 200 ms, so the elapsed time and the spinner move during a
+            // long stage (a verification takes seconds with no new fraction).
+            bar.enable_steady_tick(std::time::Duration::from_millis(200));
             bar
         });
         Self { bar }

@@ -250,15 +250,16 @@ impl Context<'_> {
     /// surrogate around `baseline`; returns its index, factor and χ²/N on the fitted
     /// data (surrogate).
     pub fn single_parameter(&self, baseline: &Evaluated) -> Option<(usize, f64, f64)> {
-        let fits: Vec<Option<(usize, f64, f64)>> = (0..self.plain.len())
-            .map(|i| {
+        // Each parameter's fit on its own thread, in order (the first of equal minima wins,
+        // as in a loop).
+        let fits: Vec<Option<(usize, f64, f64)>> =
+            super::fit::parallel_map(self.plain.len(), self.options.threads, &|i| {
                 let e = self.propose(baseline, None, &[i]).ok()?;
                 // The prior's residual is not part of the data's χ².
                 let z = self.fit_z(&e.simulated);
                 let chi2 = z.iter().map(|v| v * v).sum::<f64>() / self.n_fitted() as f64;
                 Some((i, e.factors[i], chi2))
-            })
-            .collect();
+            });
         fits.into_iter()
             .flatten()
             .min_by(|a, b| a.2.total_cmp(&b.2))

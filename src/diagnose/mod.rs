@@ -50,6 +50,7 @@ pub mod labels;
 pub mod multistart;
 pub mod observe;
 pub mod observe_runup;
+pub mod parallel;
 pub mod places;
 pub mod power;
 pub mod power_add;

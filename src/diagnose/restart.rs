@@ -16,7 +16,7 @@
 use super::DiagnoseError;
 use super::context::{Context, Evaluated};
 use super::screen::{Screened, linear_sees};
-use super::trial;
+use super::{parallel, trial};
 use crate::effects::Effect;
 
 /// Levenberg–Marquardt steps of a second start: it only has to reach the right valley
@@ -58,12 +58,33 @@ pub fn second_starts(
             !s.verified && s.rejected.is_none() && linear_sees(s.candidate.effect)
         })
         .collect();
+    // Each candidate's fit from the user's values on its own, side by side
+    // ([`super::parallel`]), taken in the list's order.
+    let mut finished = 0usize;
+    let fits = parallel::map_reporting(
+        linear.len(),
+        cx.options.threads,
+        &|k| {
+            cx.propose_within(
+                baseline,
+                Some(&screened[linear[k]].candidate),
+                &all,
+                ITERATIONS,
+            )
+        },
+        &mut |k| {
+            finished += 1;
+            progress(
+                finished,
+                linear.len(),
+                &screened[linear[k]].candidate.name(),
+            )
+        },
+    )?;
     let mut proposals: Vec<(usize, Evaluated, f64)> = Vec::new();
-    for (k, i) in linear.iter().enumerate() {
-        let c = &screened[*i].candidate;
-        progress(k, linear.len(), &c.name())?;
+    for (i, fit) in linear.iter().zip(fits) {
         // A candidate that cannot be fitted from there keeps its first start.
-        if let Ok(e) = cx.propose_within(baseline, Some(c), &all, ITERATIONS) {
+        if let Ok(e) = fit {
             let s = score(&e);
             if s < reference {
                 proposals.push((*i, e, s));
@@ -73,6 +94,7 @@ pub fn second_starts(
     proposals.sort_by(|a, b| a.2.total_cmp(&b.2));
     // (effect, its best second start's score)
     let mut effects: Vec<(Effect, f64)> = Vec::new();
+    let mut chosen: Vec<(usize, Evaluated)> = Vec::new();
     for (i, e, s) in proposals {
         let effect = screened[i].candidate.effect;
         match effects.iter().find(|(f, _)| *f == effect) {
@@ -81,8 +103,29 @@ pub fn second_starts(
             None if effects.len() >= CHECKED => continue,
             None => effects.push((effect, s)),
         }
-        let c = screened[i].candidate.clone();
-        let run = match trial::evaluate(cx, Some(&c), e.model, e.joint, e.factors, e.value) {
+        chosen.push((i, e));
+    }
+    // The chosen second starts run in the time domain side by side; which are run
+    // depends on the surrogate's scores only, never on another's run.
+    let runs = parallel::map_reporting(
+        chosen.len(),
+        cx.options.threads,
+        &|k| {
+            let (i, e) = &chosen[k];
+            let c = &screened[*i].candidate;
+            trial::evaluate(
+                cx,
+                Some(c),
+                e.model.clone(),
+                e.joint.clone(),
+                e.factors.clone(),
+                e.value,
+            )
+        },
+        &mut |_| Ok(()),
+    )?;
+    for ((i, _), run) in chosen.into_iter().zip(runs) {
+        let run = match run {
             Ok(run) => run,
             Err(e) if trial::is_fatal(&e) => return Err(e),
             // A second start that cannot be run is a rejected step: the candidate keeps
@@ -97,7 +140,7 @@ pub fn second_starts(
         if score(&run) < score(&s.evaluated) {
             s.evaluated = run;
             s.in_time_domain = true;
-            s.note = "screened on the linear model from the user's values (around the plain \\
+            s.note = "screened on the linear model from the user's values (around the plain \
                       fit it gained nothing), checked in the time domain"
                 .to_string();
         }

@@ -9,8 +9,8 @@ use super::restart::second_starts;
 use super::screen::{Screened, VERIFY_ROUNDS, screen_one, verify};
 use super::surrogate::plain_parameters;
 use super::{
-    DiagnoseError, DiagnoseOptions, LabelledRecording, Report, decide, holdout, sensor_gain,
-    sensor_refine,
+    DiagnoseError, DiagnoseOptions, LabelledRecording, Report, decide, holdout, parallel,
+    sensor_gain, sensor_refine,
 };
 use crate::model::Model;
 
@@ -99,14 +99,25 @@ pub fn diagnose(
     sensor_gain::attach(&mut list, &gains);
     let mut screened: Vec<Screened> = Vec::new();
     let mut implausible: Vec<(String, String)> = Vec::new();
-    for (k, c) in list.iter().enumerate() {
-        step(
-            0.3 + 0.2 * k as f64 / list.len() as f64,
-            &format!("screening {}", c.name()),
-        )?;
+    // Each candidate is screened on its own, side by side ([`super::parallel`]); the
+    // results are taken in the list's order.
+    let mut finished = 0usize;
+    let results = parallel::map_reporting(
+        list.len(),
+        options.threads,
+        &|k| screen_one(&cx, &plain_fit, &list[k]),
+        &mut |k| {
+            finished += 1;
+            step(
+                0.3 + 0.2 * finished as f64 / list.len() as f64,
+                &format!("screened {}", list[k].name()),
+            )
+        },
+    )?;
+    for (c, result) in list.iter().zip(results) {
         // A candidate whose signature is absent (or whose model cannot be built) is not
         // fitted; one whose simulation fails is rejected and listed; neither is fatal.
-        match screen_one(&cx, &plain_fit, c) {
+        match result {
             Ok(s) => screened.push(s),
             Err(DiagnoseError::Cancelled) => return Err(DiagnoseError::Cancelled),
             Err(DiagnoseError::Input(why)) => implausible.push((c.name(), why)),
@@ -134,7 +145,7 @@ pub fn diagnose(
             &mut |k, n, name| {
                 step(
                     0.5 + 0.1 * k as f64 / n.max(1) as f64,
-                    &format!("screening {name} from the user's values"),
+                    &format!("screened {name} from the user's values"),
                 )
             },
         )?;
@@ -147,7 +158,7 @@ pub fn diagnose(
             &mut |k, n, name| {
                 step(
                     0.6 + 0.3 * k as f64 / n.max(1) as f64,
-                    &format!("verifying {name}"),
+                    &format!("verified {name}"),
                 )
             },
         )?;

@@ -234,33 +234,22 @@ pub fn verify(
         }
         chosen.push(i);
     }
-    for (k, i) in chosen.iter().enumerate() {
-        let s = &screened[*i];
-        progress(k, chosen.len(), &s.candidate.name())?;
-        let c = &s.candidate;
-        let result = if s.in_time_domain {
-            Ok(cx.rounds(s.evaluated.clone(), Some(c), VERIFY_ROUNDS - 1, None))
-        } else if linear_sees(c.effect) {
-            Ok(cx.rounds(
-                plain.clone(),
-                Some(c),
-                VERIFY_ROUNDS,
-                Some(s.evaluated.clone()),
-            ))
-        } else {
-            // The effect's value from the screening, on the whole campaign, then the
-            // plain parameters refitted with it in place.
-            let e = &s.evaluated;
-            trial::evaluate(
-                cx,
-                Some(c),
-                e.model.clone(),
-                e.joint.clone(),
-                e.factors.clone(),
-                e.value,
+    // Each chosen candidate is verified on its own, side by side ([`super::parallel`]).
+    let mut finished = 0usize;
+    let results = super::parallel::map_reporting(
+        chosen.len(),
+        cx.options.threads,
+        &|k| verify_one(cx, plain, &screened[chosen[k]]),
+        &mut |k| {
+            finished += 1;
+            progress(
+                finished,
+                chosen.len(),
+                &screened[chosen[k]].candidate.name(),
             )
-            .map(|e| cx.rounds(e, Some(c), VERIFY_ROUNDS - 1, None))
-        };
+        },
+    )?;
+    for (i, result) in chosen.iter().zip(results) {
         let s = &mut screened[*i];
         match result {
             Err(e) if trial::is_fatal(&e) => return Err(e),
@@ -280,4 +269,36 @@ pub fn verify(
         }
     }
     Ok(())
+}
+
+/// The time-domain rounds of one screened candidate `s` ([`verify`]).
+fn verify_one(
+    cx: &Context,
+    plain: &Evaluated,
+    s: &Screened,
+) -> Result<super::rounds::Stepped, DiagnoseError> {
+    let c = &s.candidate;
+    if s.in_time_domain {
+        Ok(cx.rounds(s.evaluated.clone(), Some(c), VERIFY_ROUNDS - 1, None))
+    } else if linear_sees(c.effect) {
+        Ok(cx.rounds(
+            plain.clone(),
+            Some(c),
+            VERIFY_ROUNDS,
+            Some(s.evaluated.clone()),
+        ))
+    } else {
+        // The effect's value from the screening, on the whole campaign, then the
+        // plain parameters refitted with it in place.
+        let e = &s.evaluated;
+        trial::evaluate(
+            cx,
+            Some(c),
+            e.model.clone(),
+            e.joint.clone(),
+            e.factors.clone(),
+            e.value,
+        )
+        .map(|e| cx.rounds(e, Some(c), VERIFY_ROUNDS - 1, None))
+    }
 }

@@ -42,9 +42,22 @@ pub fn refine_best_artifact(
     let mut kept = screened[i].evaluated.clone();
     let mut steps = Vec::new();
     let from_user = cx.fit_artifact(baseline, &c);
-    for start in [Ok(kept.clone()), from_user] {
-        let stepped = match start {
-            Ok(s) => cx.rounds(s, Some(&c), VERIFY_ROUNDS, None),
+    // The two starts' rounds run side by side ([`super::parallel`]), taken in order.
+    let starts = [Ok(kept.clone()), from_user];
+    let fits = super::parallel::map_reporting(
+        starts.len(),
+        cx.options.threads,
+        &|k| {
+            starts[k]
+                .as_ref()
+                .map(|s| cx.rounds(s.clone(), Some(&c), VERIFY_ROUNDS, None))
+                .map_err(Clone::clone)
+        },
+        &mut |_| Ok(()),
+    )?;
+    for fit in fits {
+        let stepped = match fit {
+            Ok(stepped) => stepped,
             Err(e) if trial::is_fatal(&e) => return Err(e),
             Err(e) => {
                 steps.push(trial::reason("start from the user's values", &e));

@@ -11,7 +11,7 @@
 
 use super::observe::{Observed, RunShape};
 use super::sensor::{self, TapeJoint};
-use super::spread::spread_factors;
+use super::spread::{run_factors, run_orders};
 use crate::effects::param_error::{parameter_names, scale_parameter};
 use crate::model::{ConnectionKind, Model};
 use crate::physics::{ElementLaw, Excitation, OperatingPoint, System};
@@ -119,17 +119,15 @@ pub fn linear_predict(
     joint: Option<&TapeJoint>,
 ) -> Option<Vec<f64>> {
     let mut out = vec![0.0; observed.observations.len()];
+    // The speed spread's factors ([`super::spread`]) come from the same system and
+    // excitation of each run, built once here for both.
+    let mut factors = vec![1.0; observed.observations.len()];
     for (r, run) in observed.runs.iter().enumerate() {
         let system = causal_system(model, run.load, run_speeds(observed, r))?;
         let mine: Vec<usize> = (0..out.len())
             .filter(|i| observed.observations[*i].run == r)
             .collect();
-        let mut orders: Vec<f64> = mine
-            .iter()
-            .map(|i| observed.observations[*i].order)
-            .collect();
-        orders.sort_by(f64::total_cmp);
-        orders.dedup();
+        let orders = run_orders(observed, r);
         let mut speeds: Vec<f64> = match run.regime {
             RunShape::Steady { speed_rpm } | RunShape::LongRun { speed_rpm } => vec![speed_rpm],
             RunShape::Ramp { .. } => mine
@@ -151,8 +149,9 @@ pub fn linear_predict(
                 .unwrap_or(0);
             out[i] = response.ias_amplitude_rpm[node][q][s];
         }
+        run_factors(observed, r, &system, &excitation, &orders, &mut factors);
     }
-    for (v, f) in out.iter_mut().zip(spread_factors(model, observed)) {
+    for (v, f) in out.iter_mut().zip(factors) {
         *v *= f;
     }
     sensor::measure(observed, &ratios(model), joint, &mut out);
