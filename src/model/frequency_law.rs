@@ -107,4 +107,58 @@ mod tests {
             assert!(law.problem().is_some(), "{n} {f}");
         }
     }
+
+    /// The model file's key reads, writes back the same, reaches the linear model's
+    /// element, and is refused beside `frequency_poly` or out of range.
+    #[test]
+    fn reads_writes_and_refuses() {
+        use crate::model::{ConnectionKind, parse_model, presets, to_toml_string};
+        use crate::physics::{OperatingPoint, System};
+        let base = presets::preset("diagnosis-bench").expect("shipped").text;
+        let at = "psi = 1.0\n";
+        assert!(base.contains(at));
+        let with = |extra: &str| base.replacen(at, &format!("{at}{extra}\n"), 1);
+        let text = with("frequency_power_law = { exponent = 0.12, reference_hz = 30.0 }");
+        let model = parse_model(&text, "m.toml").unwrap();
+        let law = model
+            .connections
+            .iter()
+            .find_map(|c| match &c.kind {
+                ConnectionKind::Rubber(r) => r.frequency_power_law,
+                _ => None,
+            })
+            .unwrap();
+        assert_eq!(
+            law,
+            PowerLaw {
+                exponent: 0.12,
+                reference_hz: 30.0
+            }
+        );
+        let again = parse_model(&to_toml_string(&model), "again.toml").unwrap();
+        assert_eq!(again, model);
+        // The linear model sees the storage and the law's loss (ψ = 1 is ξ = 0.159, below
+        // tan(0.12·π/2) = 0.191).
+        let point = OperatingPoint {
+            load: 0.0,
+            temperature_c: None,
+        };
+        let system = System::new(&model, point).unwrap();
+        let e = system
+            .elements
+            .iter()
+            .find(|e| e.is_frequency_dependent())
+            .unwrap();
+        let (k30, eta) = e.stiffness_at(30.0);
+        let (k300, _) = e.stiffness_at(300.0);
+        assert!((k300 / k30 - 10f64.powf(0.12)).abs() < 1e-12);
+        assert!((eta - law.own_loss_factor()).abs() < 1e-12);
+        for bad in [
+            "frequency_power_law = { exponent = 1.2, reference_hz = 30.0 }",
+            "frequency_power_law = { exponent = 0.1 }",
+            "frequency_power_law = { exponent = 0.1, reference_hz = 30.0 }\nfrequency_poly = [0, 0.01, 1]",
+        ] {
+            assert!(parse_model(&with(bad), "bad.toml").is_err(), "{bad}");
+        }
+    }
 }
