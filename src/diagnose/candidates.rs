@@ -260,3 +260,38 @@ pub fn candidates(model: &Model, stations: &[String], long_run: bool) -> Vec<Can
     }
     out
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::{parse_model, presets};
+
+    /// Each rubber stage has both forms of the frequency law; the causal one names its
+    /// form and puts the fitted exponent on the stage.
+    #[test]
+    fn a_rubber_stage_has_the_causal_power_law() {
+        let text = presets::preset("diagnosis-bench").expect("shipped").text;
+        let model = parse_model(text, "bench.toml").unwrap();
+        let list = candidates(&model, &[], false);
+        let forms: Vec<&Candidate> = list
+            .iter()
+            .filter(|c| c.effect == Effect::CouplingFrequencyDependence)
+            .collect();
+        assert_eq!(forms.len(), 2);
+        let causal = forms.iter().find(|c| c.param.key == "exponent").unwrap();
+        assert_eq!(
+            causal.name(),
+            "coupling_frequency_dependence at coupling (power_law)"
+        );
+        let (with, _) = causal.apply(&model, 0.1).unwrap();
+        let law = with
+            .connections
+            .iter()
+            .find_map(|c| match &c.kind {
+                ConnectionKind::Rubber(r) => r.frequency_power_law,
+                _ => None,
+            })
+            .unwrap();
+        assert_eq!(law.exponent, 0.1);
+    }
+}
