@@ -51,6 +51,7 @@ fn rubber(from: &str, to: &str, k: f64, psi: f64, frequency_poly: Option<Poly>) 
             temperature_c: 25.0,
             amplitude_poly: None,
             frequency_poly,
+            frequency_power_law: None,
             temperature_stiffness_poly: None,
             temperature_damping_poly: None,
             thermal: None,

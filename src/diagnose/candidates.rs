@@ -7,6 +7,7 @@
 //! |---|---|---|---|
 //! | `coupling_amplitude_nonlinearity` | rubber stage | `a2` of seed 000 eq. 1 (per mm²) | 0.0152 |
 //! | `coupling_frequency_dependence` | rubber stage | `scale` of seed 000 eq. 9 | 0.1 |
+//! | `coupling_frequency_dependence` (`form = power_law`) | rubber stage | `exponent` of a causal power law (loss tan(nπ/2)) | 0.05 |
 //! | `coupling_thermal_drift` | rubber stage, with a long run | `capacity_j_per_k` (eq. 10–11) | 300 |
 //! | `hysteretic_damping` | spring with a viscous damper | `reference_hz` where ψ matches | 50 |
 //! | `unmodelled_mode` | rubber stage or shaft | `inertia_kg_m2` of a middle flange | ¼ lightest node |
@@ -19,6 +20,7 @@
 
 use super::fit::Bounds;
 use super::sensor::{ArtifactForm, TapeJoint};
+use crate::effects::rubber_power as power;
 use crate::effects::{Effect, EffectSpec, build_truth};
 use crate::model::{ConnectionKind, Model};
 use std::sync::Arc;
@@ -76,10 +78,14 @@ pub struct Candidate {
 impl Candidate {
     /// `"gear_backlash at gearbox"`.
     pub fn name(&self) -> String {
+        // A sensor artifact's `kind` and a frequency law's `form` tell the rows of one
+        // place apart (a branch's place is its node, one row per node already).
         let kind = self
             .fixed
             .iter()
-            .find(|(k, _)| *k == "kind")
+            .find(|(k, _)| {
+                *k == "kind" || (*k == "form" && self.effect == Effect::CouplingFrequencyDependence)
+            })
             .map_or(String::new(), |(_, v)| format!(" ({v})"));
         match self.fixed.first() {
             Some((_, v)) => format!("{} at {v}{kind}", self.effect),
@@ -159,6 +165,12 @@ pub fn candidates(model: &Model, stations: &[String], long_run: bool) -> Vec<Can
                     Effect::CouplingFrequencyDependence,
                     param("scale", 0.1, 0.0, 1.0, false),
                 ));
+                let mut causal = add(
+                    Effect::CouplingFrequencyDependence,
+                    param("exponent", 0.05, 0.0, power::MAX_EXPONENT, false),
+                );
+                causal.fixed.push(("form", power::FORM.to_string()));
+                out.push(causal);
                 if long_run {
                     out.push(add(
                         Effect::CouplingThermalDrift,
@@ -247,4 +259,39 @@ pub fn candidates(model: &Model, stations: &[String], long_run: bool) -> Vec<Can
         });
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::{parse_model, presets};
+
+    /// Each rubber stage has both forms of the frequency law; the causal one names its
+    /// form and puts the fitted exponent on the stage.
+    #[test]
+    fn a_rubber_stage_has_the_causal_power_law() {
+        let text = presets::preset("diagnosis-bench").expect("shipped").text;
+        let model = parse_model(text, "bench.toml").unwrap();
+        let list = candidates(&model, &[], false);
+        let forms: Vec<&Candidate> = list
+            .iter()
+            .filter(|c| c.effect == Effect::CouplingFrequencyDependence)
+            .collect();
+        assert_eq!(forms.len(), 2);
+        let causal = forms.iter().find(|c| c.param.key == "exponent").unwrap();
+        assert_eq!(
+            causal.name(),
+            "coupling_frequency_dependence at coupling (power_law)"
+        );
+        let (with, _) = causal.apply(&model, 0.1).unwrap();
+        let law = with
+            .connections
+            .iter()
+            .find_map(|c| match &c.kind {
+                ConnectionKind::Rubber(r) => r.frequency_power_law,
+                _ => None,
+            })
+            .unwrap();
+        assert_eq!(law.exponent, 0.1);
+    }
 }

@@ -83,6 +83,7 @@ pub(crate) fn hysteretic(
         temperature_c: 25.0,
         amplitude_poly: None,
         frequency_poly: None,
+        frequency_power_law: None,
         temperature_stiffness_poly: None,
         temperature_damping_poly: None,
         thermal: None,

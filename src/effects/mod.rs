@@ -9,6 +9,7 @@
 //! | [`effect`] | the effects by their spec identifiers, and the `key=value` parameters sizing one |
 //! | [`truth`] | [`build_truth`]: the user's model with parameter errors and one effect added |
 //! | [`rubber`] | rubber-stage effects: amplitude nonlinearity, frequency dependence, thermal drift |
+//! | [`rubber_power`] | frequency dependence as a causal power law (`form = power_law`) |
 //! | [`branch`] | unmodelled mode, branch form: a local mode hanging on any node |
 //! | [`hysteretic`] | rate-independent (hysteretic) damping in place of a viscous equivalent |
 //! | [`structure`] | structure and engine: unmodelled mode, variable crank inertia, backlash, imbalance |
@@ -35,6 +36,7 @@ pub mod hysteretic;
 pub mod param_error;
 pub mod rng;
 pub mod rubber;
+pub mod rubber_power;
 pub mod sensor;
 pub mod structure;
 pub mod truth;

@@ -20,7 +20,7 @@ pub const SEED_TEMPERATURE_STIFFNESS_POLY: [f64; 3] = [0.000187, -0.02565, 1.530
 pub const SEED_TEMPERATURE_DAMPING_POLY: [f64; 3] = [0.000063, -0.01275, 1.281];
 
 /// Index of the rubber stage `connection` names (default: the first rubber stage).
-fn stage_index(model: &Model, p: &mut Params) -> Result<usize, EffectError> {
+pub(super) fn stage_index(model: &Model, p: &mut Params) -> Result<usize, EffectError> {
     let first = model
         .connections
         .iter()
@@ -40,7 +40,7 @@ fn stage_index(model: &Model, p: &mut Params) -> Result<usize, EffectError> {
 }
 
 /// The rubber stage of connection `j` (found by [`stage_index`]).
-fn stage_mut(model: &mut Model, j: usize) -> Result<&mut RubberStage, EffectError> {
+pub(super) fn stage_mut(model: &mut Model, j: usize) -> Result<&mut RubberStage, EffectError> {
     let name = model.connections[j].name.clone();
     match &mut model.connections[j].kind {
         ConnectionKind::Rubber(r) => Ok(r),
@@ -96,12 +96,29 @@ pub(crate) fn amplitude(model: &mut Model, spec: &EffectSpec) -> Result<Applied,
 /// (default 0.1) about `reference_hz`, where it equals the user's stiffness (default: the
 /// user model's first mode, the frequency a user would have tuned the stiffness to):
 /// `α_f(f) = 1 + scale·(g(f) − g(f_ref))`, g eq. 9, held beyond its measured 300 Hz.
+/// `form` is `poly` (this, the default) or `power_law` ([`super::rubber_power`]).
 pub(crate) fn frequency(
     model: &mut Model,
     user: &Model,
     spec: &EffectSpec,
 ) -> Result<Applied, EffectError> {
-    let mut p = Params::new(spec, &["connection", "scale", "reference_hz"])?;
+    if spec.params.contains_key("form") {
+        let form = spec.params.get("form").map(String::as_str);
+        if form == Some(super::rubber_power::FORM) {
+            return super::rubber_power::power_law(model, user, spec);
+        }
+        if form != Some("poly") {
+            return Err(EffectError::Input(format!(
+                "effect `coupling_frequency_dependence`, parameter `form`: `{}`: expected \
+                 poly or power_law",
+                form.unwrap_or_default()
+            )));
+        }
+    }
+    let mut p = Params::new(spec, &["connection", "form", "scale", "reference_hz"])?;
+    if spec.params.contains_key("form") {
+        p.text("form", None)?;
+    }
     let j = stage_index(model, &mut p)?;
     let scale = p.number("scale", 0.1, 0.0, 1.0)?;
     let first_mode = mode_frequencies_hz(user)?.first().copied().unwrap_or(50.0);

@@ -5,6 +5,7 @@
 
 pub mod engine_types;
 pub mod error;
+pub mod frequency_law;
 pub mod graph;
 mod key_lines;
 pub mod names;
@@ -22,6 +23,7 @@ pub mod write;
 
 pub use engine_types::*;
 pub use error::ModelError;
+pub use frequency_law::PowerLaw;
 pub use operation_types::*;
 pub use read::{parse_model, read_model_file};
 pub use types::*;

@@ -13,8 +13,8 @@ use super::key_lines::{KeyLines, Lines};
 use super::read_sections::{engine, expect, harmonic, load, operation};
 use super::spanned::Tab;
 use super::{
-    Connection, ConnectionKind, Expect, Gear, Inertia, Model, Operation, Poly, RubberElements,
-    RubberStage, RubberStiffness, Shaft, Thermal,
+    Connection, ConnectionKind, Expect, Gear, Inertia, Model, Operation, Poly, PowerLaw,
+    RubberElements, RubberStage, RubberStiffness, Shaft, Thermal,
 };
 use super::{ModelError, validate};
 
@@ -176,6 +176,7 @@ fn connection(t: &Tab) -> Result<Connection, ModelError> {
                 "amplitude_poly_range",
                 "frequency_poly",
                 "frequency_poly_range",
+                "frequency_power_law",
                 "temperature_stiffness_poly",
                 "temperature_stiffness_poly_range",
                 "temperature_damping_poly",
@@ -250,12 +251,23 @@ fn rubber(t: &Tab) -> Result<ConnectionKind, ModelError> {
             })
         }
     };
+    let frequency_power_law = match t.opt_table("frequency_power_law")? {
+        None => None,
+        Some(h) => {
+            h.allow(&["exponent", "reference_hz"])?;
+            Some(PowerLaw {
+                exponent: h.f64("exponent")?,
+                reference_hz: h.f64("reference_hz")?,
+            })
+        }
+    };
     Ok(ConnectionKind::Rubber(RubberStage {
         stiffness,
         psi: t.f64("psi")?,
         temperature_c: t.f64_or("temperature_c", 25.0)?,
         amplitude_poly: amplitude?,
         frequency_poly: frequency?,
+        frequency_power_law,
         temperature_stiffness_poly: temp_k?,
         temperature_damping_poly: temp_d?,
         thermal,

@@ -138,7 +138,8 @@ pub struct RubberState {
     /// Tangent stiffness `c_Tstat·d(α_x x)/dx·α_f·α_Tc`, N·m/rad: what small vibration
     /// about the twist sees.
     pub tangent_stiffness_nm_per_rad: f64,
-    /// Loss factor `ξ_T = ψ/2π · α_Tξ` (eq. 15).
+    /// Loss factor `ξ_T = ψ/2π · α_Tξ` (eq. 15); with a `frequency_power_law`, at least
+    /// its `tan(nπ/2)` ([`super::frequency_law`]).
     pub loss_factor: f64,
     /// Relative damping at the temperature, `ψ_T = 2π·ξ_T`.
     pub psi: f64,
@@ -182,6 +183,16 @@ fn factor(poly: Option<&Poly>, which: Factor, x: f64, warnings: &mut Vec<RangeWa
 }
 
 impl RubberStage {
+    /// The stiffness factor at vibration frequency `frequency_hz`: the causal power law's
+    /// storage ratio when the stage has one, else α_f (seed 000 eq. 9), else 1.
+    pub fn frequency_factor(&self, frequency_hz: f64) -> f64 {
+        match (&self.frequency_power_law, &self.frequency_poly) {
+            (Some(law), _) => law.storage(frequency_hz),
+            (None, Some(p)) => p.eval(frequency_hz),
+            (None, None) => 1.0,
+        }
+    }
+
     /// Static torsional stiffness at 25 °C, N·m/rad (given, or seed 000 eq. 12).
     pub fn static_stiffness_nm_per_rad(&self) -> f64 {
         match &self.stiffness {
@@ -223,14 +234,15 @@ impl RubberStage {
             }
             _ => (1.0, 1.0),
         };
-        let alpha_f = match frequency_hz {
-            Some(f) => factor(
+        let alpha_f = match (frequency_hz, &self.frequency_power_law) {
+            (Some(f), Some(law)) => law.storage(f),
+            (Some(f), None) => factor(
                 self.frequency_poly.as_ref(),
                 Factor::Frequency,
                 f,
                 &mut warnings,
             ),
-            None => 1.0,
+            (None, _) => 1.0,
         };
         let alpha_tc = factor(
             self.temperature_stiffness_poly.as_ref(),
@@ -245,7 +257,10 @@ impl RubberStage {
             &mut warnings,
         );
         let k0 = self.static_stiffness_nm_per_rad();
-        let loss_factor = self.psi / (2.0 * std::f64::consts::PI) * alpha_txi;
+        let catalogue = self.psi / (2.0 * std::f64::consts::PI) * alpha_txi;
+        let loss_factor = self
+            .frequency_power_law
+            .map_or(catalogue, |l| l.loss_factor(catalogue));
         RubberState {
             static_stiffness_nm_per_rad: k0,
             alpha_x,

@@ -166,6 +166,9 @@ pub struct RubberStage {
     pub amplitude_poly: Option<Poly>,
     /// α_f(f), f the vibration frequency in Hz (seed 000 eq. 9).
     pub frequency_poly: Option<Poly>,
+    /// A causal power law in place of `frequency_poly` (issue 14,
+    /// [`super::frequency_law`]): storage `(f/f_ref)^n`, loss factor `max(ψ/2π, tan(nπ/2))`.
+    pub frequency_power_law: Option<super::PowerLaw>,
     /// α_Tc(T), T in °C (seed 000 eq. 10).
     pub temperature_stiffness_poly: Option<Poly>,
     /// α_Tξ(T), T in °C (seed 000 eq. 11).

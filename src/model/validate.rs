@@ -236,6 +236,17 @@ fn rubber(key: &str, r: &RubberStage) -> Check {
             poly_shape(&k(name), p)?;
         }
     }
+    if let Some(law) = &r.frequency_power_law {
+        if let Some(why) = law.problem() {
+            fail(k("frequency_power_law"), why)?;
+        }
+        if r.frequency_poly.is_some() {
+            fail(
+                k("frequency_power_law"),
+                "give either `frequency_poly` or `frequency_power_law`, not both",
+            )?;
+        }
+    }
     if let Some(t) = &r.thermal {
         positive(&k("thermal.capacity_j_per_k"), t.capacity_j_per_k)?;
         positive(&k("thermal.conductance_w_per_k"), t.conductance_w_per_k)?;

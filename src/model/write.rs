@@ -175,6 +175,13 @@ fn rubber(out: &mut String, r: &RubberStage) {
             }
         }
     }
+    if let Some(law) = &r.frequency_power_law {
+        let fields = [
+            ("exponent", num(law.exponent)),
+            ("reference_hz", num(law.reference_hz)),
+        ];
+        kv(out, "frequency_power_law", inline(&fields));
+    }
     if let Some(t) = &r.thermal {
         let fields = [
             ("capacity_j_per_k", num(t.capacity_j_per_k)),

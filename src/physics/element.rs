@@ -2,7 +2,7 @@
 //! stage becomes one — linearized at its static twist (seed 000 eq. 1–2, 13, 15).
 
 use super::error::PhysicsError;
-use crate::model::{Poly, RubberStage};
+use crate::model::{Poly, PowerLaw, RubberStage};
 
 /// How an element's stiffness behaves.
 #[derive(Debug, Clone, PartialEq)]
@@ -21,6 +21,8 @@ pub enum ElementLaw {
         base_stiffness_nm_per_rad: f64,
         /// α_f(f) (seed 000 eq. 9); `None`: no frequency dependence.
         frequency_poly: Option<Poly>,
+        /// A causal power law in place of α_f (its loss is in `loss_factor` already).
+        frequency_power_law: Option<PowerLaw>,
         /// Loss factor `ξ_T = ψ/2π·α_Tξ`.
         loss_factor: f64,
     },
@@ -66,11 +68,14 @@ impl Element {
             ElementLaw::Rubber {
                 base_stiffness_nm_per_rad,
                 frequency_poly,
+                frequency_power_law,
                 loss_factor,
             } => {
-                let alpha_f = frequency_poly
-                    .as_ref()
-                    .map_or(1.0, |p| p.eval(frequency_hz));
+                let alpha_f = match (frequency_power_law, frequency_poly) {
+                    (Some(law), _) => law.storage(frequency_hz),
+                    (None, Some(p)) => p.eval(frequency_hz),
+                    (None, None) => 1.0,
+                };
                 (base_stiffness_nm_per_rad * alpha_f, *loss_factor)
             }
             ElementLaw::Causal {
@@ -105,6 +110,9 @@ impl Element {
             &self.law,
             ElementLaw::Rubber {
                 frequency_poly: Some(_),
+                ..
+            } | ElementLaw::Rubber {
+                frequency_power_law: Some(_),
                 ..
             } | ElementLaw::Causal { .. }
         )
@@ -150,6 +158,7 @@ pub(super) fn rubber_law(
         ElementLaw::Rubber {
             base_stiffness_nm_per_rad: state.tangent_stiffness_nm_per_rad * r2,
             frequency_poly: stage.frequency_poly.clone(),
+            frequency_power_law: stage.frequency_power_law,
             loss_factor: state.loss_factor,
         },
         twist,

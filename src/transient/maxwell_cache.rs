@@ -21,6 +21,9 @@ fn key(stage: &RubberStage, band_hz: [f64; 2]) -> Key {
         band_hz[0].to_bits(),
         band_hz[1].to_bits(),
     ];
+    if let Some(law) = &stage.frequency_power_law {
+        key.extend([u64::MAX, law.exponent.to_bits(), law.reference_hz.to_bits()]);
+    }
     if let Some(p) = &stage.frequency_poly {
         key.extend(p.coeffs.iter().map(|c| c.to_bits()));
         if let Some(range) = p.range {
@@ -75,6 +78,7 @@ mod tests {
                 coeffs: [a2, 0.0, 1.0],
                 range: None,
             }),
+            frequency_power_law: None,
             temperature_stiffness_poly: None,
             temperature_damping_poly: None,
             thermal: None,

@@ -47,6 +47,7 @@ pub fn rubber(from: &str, to: &str, k: f64, psi: f64) -> Connection {
             temperature_c: 25.0,
             amplitude_poly: None,
             frequency_poly: None,
+            frequency_power_law: None,
             temperature_stiffness_poly: None,
             temperature_damping_poly: None,
             thermal: None,
@@ -82,6 +83,7 @@ pub fn seed000_stage(elements: RubberElements, psi: f64, temperature_c: f64) -> 
             coeffs: [-0.000023, 0.01519, 1.0],
             range: Some([0.0, 300.0]),
         }),
+        frequency_power_law: None,
         temperature_stiffness_poly: Some(Poly {
             coeffs: [0.000187, -0.02565, 1.530],
             range: None,

@@ -101,6 +101,7 @@ pub fn add_ui(ui: &mut Ui, cx: &mut EditCtx, model: &mut Model) {
                     temperature_c: 25.0,
                     amplitude_poly: None,
                     frequency_poly: None,
+                    frequency_power_law: None,
                     temperature_stiffness_poly: None,
                     temperature_damping_poly: None,
                     thermal: None,
