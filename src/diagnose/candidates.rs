@@ -93,6 +93,15 @@ impl Candidate {
         }
     }
 
+    /// The functional form of this candidate among its effect's (`"branch"`,
+    /// `"power_law"`, a sensor artifact's `kind`), `None` for the effect's first form.
+    pub fn form(&self) -> Option<&str> {
+        self.fixed
+            .iter()
+            .find(|(k, _)| *k == "form" || *k == "kind")
+            .map(|(_, v)| v.as_str())
+    }
+
     /// A sensor artifact's form, from its `kind` (a tape joint when it has none).
     pub fn artifact_form(&self) -> ArtifactForm {
         match self.fixed.iter().find(|(k, _)| *k == "kind") {

@@ -27,7 +27,10 @@ pub fn map_reporting<T: Send>(
     let next = AtomicUsize::new(0);
     let mut stopped: Option<DiagnoseError> = None;
     std::thread::scope(|scope| {
-        let (tx, rx) = mpsc::channel::<(usize, T)>();
+        // A rendezvous channel: a worker hands its result over before it takes the next
+        // item, so a stop from `done` is seen after at most one more item per worker
+        // (an unbounded channel let a fast worker run ahead through every item).
+        let (tx, rx) = mpsc::sync_channel::<(usize, T)>(0);
         for _ in 0..threads.clamp(1, n.max(1)) {
             let tx = tx.clone();
             let next = &next;
