@@ -6,8 +6,8 @@
 use std::path::Path;
 
 use super::{
-    Connection, ConnectionKind, Engine, Expect, Harmonic, HarmonicAmplitude, Model, Operation,
-    Poly, Pressure, PressureCurve, RubberStage, RubberStiffness,
+    AmplitudeForm, Connection, ConnectionKind, Engine, Expect, Harmonic, HarmonicAmplitude, Model,
+    Operation, Poly, Pressure, PressureCurve, RubberStage, RubberStiffness,
 };
 
 /// Arrays longer than this (written on one line) are wrapped.
@@ -174,6 +174,9 @@ fn rubber(out: &mut String, r: &RubberStage) {
                 kv(out, &format!("{key}_range"), nums(range, 0, 0));
             }
         }
+    }
+    if r.amplitude_form != AmplitudeForm::default() {
+        kv(out, "amplitude_form", string(r.amplitude_form.key()));
     }
     if let Some(t) = &r.thermal {
         let fields = [

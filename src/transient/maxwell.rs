@@ -195,6 +195,7 @@ mod tests {
             psi: 1.0,
             temperature_c: 25.0,
             amplitude_poly: None,
+            amplitude_form: Default::default(),
             frequency_poly,
             temperature_stiffness_poly: None,
             temperature_damping_poly: None,

@@ -46,6 +46,7 @@ pub fn rubber(from: &str, to: &str, k: f64, psi: f64) -> Connection {
             psi,
             temperature_c: 25.0,
             amplitude_poly: None,
+            amplitude_form: Default::default(),
             frequency_poly: None,
             temperature_stiffness_poly: None,
             temperature_damping_poly: None,
