@@ -5,7 +5,8 @@
 //!
 //! | effect | where | fitted | start |
 //! |---|---|---|---|
-//! | `coupling_amplitude_nonlinearity` | rubber stage | `a2` of seed 000 eq. 1 (per mm², bounds from the full-load twist, [`super::candidates_amplitude`]) | 0.0152, or 10 % at full load |
+//! | `coupling_amplitude_nonlinearity` | rubber stage | `a2` of seed 000 eq. 1 (per mm², ≤ 0.5) | 0.0152 |
+//! | `coupling_amplitude_nonlinearity` (`form = elastic`, damping not scaled) | rubber stage | `a2` (bounds from the full-load twist, [`super::candidates_amplitude`]) | 10 % at full load |
 //! | `coupling_frequency_dependence` | rubber stage | `scale` of seed 000 eq. 9 | 0.1 |
 //! | `coupling_thermal_drift` | rubber stage, with a long run | `capacity_j_per_k` (eq. 10–11) | 300 |
 //! | `hysteretic_damping` | spring with a viscous damper | `reference_hz` where ψ matches | 50 |
