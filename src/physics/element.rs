@@ -79,6 +79,9 @@ impl Element {
                     .as_ref()
                     .map_or(1.0, |p| p.eval(frequency_hz));
                 let lossy = base_stiffness_nm_per_rad * alpha_f;
+                if *elastic_nm_per_rad == 0.0 {
+                    return (lossy, *loss_factor);
+                }
                 with_elastic(lossy, lossy * loss_factor, *elastic_nm_per_rad)
             }
             ElementLaw::Causal {
@@ -92,6 +95,9 @@ impl Element {
                     let x = omega * tau;
                     (re + k * x * x / (1.0 + x * x), im + k * x / (1.0 + x * x))
                 });
+                if *elastic_nm_per_rad == 0.0 {
+                    return (base_stiffness_nm_per_rad * re, im / re.max(1e-12));
+                }
                 with_elastic(
                     base_stiffness_nm_per_rad * re,
                     base_stiffness_nm_per_rad * im,

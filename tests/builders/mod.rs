@@ -79,6 +79,7 @@ pub fn seed000_stage(elements: RubberElements, psi: f64, temperature_c: f64) -> 
             coeffs: [0.0152, 0.0033, 1.0],
             range: None,
         }),
+        amplitude_form: Default::default(),
         frequency_poly: Some(Poly {
             coeffs: [-0.000023, 0.01519, 1.0],
             range: Some([0.0, 300.0]),
