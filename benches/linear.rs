@@ -50,6 +50,7 @@ fn rubber(from: &str, to: &str, k: f64, psi: f64, frequency_poly: Option<Poly>) 
             psi,
             temperature_c: 25.0,
             amplitude_poly: None,
+            amplitude_form: Default::default(),
             frequency_poly,
             frequency_power_law: None,
             temperature_stiffness_poly: None,

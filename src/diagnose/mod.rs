@@ -37,6 +37,7 @@
 pub mod accept;
 pub mod branch;
 pub mod candidates;
+pub mod candidates_amplitude;
 pub mod context;
 pub mod decide;
 pub mod drift;

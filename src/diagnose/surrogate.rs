@@ -76,6 +76,7 @@ pub fn causal_system(model: &Model, load: f64, [lo, hi]: [f64; 2]) -> Option<Sys
         if let (
             ElementLaw::Rubber {
                 base_stiffness_nm_per_rad,
+                elastic_nm_per_rad,
                 ..
             },
             ConnectionKind::Rubber(stage),
@@ -86,6 +87,7 @@ pub fn causal_system(model: &Model, load: f64, [lo, hi]: [f64; 2]) -> Option<Sys
                 base_stiffness_nm_per_rad: *base_stiffness_nm_per_rad,
                 equilibrium: chain.equilibrium,
                 arms: chain.arms,
+                elastic_nm_per_rad: *elastic_nm_per_rad,
             };
         }
     }

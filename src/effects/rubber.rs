@@ -7,11 +7,22 @@ use super::EffectError;
 use super::effect::{EffectSpec, Params};
 use super::truth::{Applied, mode_frequencies_hz};
 use crate::model::{
-    ConnectionKind, Model, Poly, RubberElements, RubberStage, RubberStiffness, Thermal,
+    AmplitudeForm, ConnectionKind, Model, Poly, RubberElements, RubberStage, RubberStiffness,
+    Thermal,
 };
 
 /// Seed 000 eq. 1: α_x(x) = 0.0152 x² + 0.0033 x + 1, x in mm.
 pub const SEED_AMPLITUDE_POLY: [f64; 3] = [0.0152, 0.0033, 1.0];
+/// The pitch diameter, m, on which a stage given by its stiffness is written as elements
+/// for the amplitude law: 0.2.
+pub const DEFAULT_PITCH_DIAMETER_M: f64 = 0.2;
+/// The largest `a2` of eq. 1 the amplitude effect takes, per mm²: 1e4, the stiffness
+/// doubled at 0.01 mm of element deformation. A bound per mm² follows the element's size:
+/// the seed's 0.0152 /mm² belongs to elements deforming by millimetres; a stiff coupling
+/// whose elements deform by a tenth of that stiffens as much with a hundred times the
+/// coefficient (issue 14), so the bound is set by the smallest deformation that means
+/// anything, not by the seed's elements.
+pub const A2_MAX_PER_MM2: f64 = 1.0e4;
 /// Seed 000 eq. 9: α_f(f) = −0.000023 f² + 0.01519 f + 1, f in Hz (measured 50–300 Hz).
 pub const SEED_FREQUENCY_POLY: [f64; 3] = [-0.000023, 0.01519, 1.0];
 /// Seed 000 eq. 10: α_Tc(T), T in °C (measured 25–55 °C).
@@ -50,13 +61,28 @@ pub(super) fn stage_mut(model: &mut Model, j: usize) -> Result<&mut RubberStage,
     }
 }
 
-/// `coupling_amplitude_nonlinearity`: α_x(x) = a2·x² + a1·x + 1 (default seed 000 eq. 1).
+/// `coupling_amplitude_nonlinearity`: α_x(x) = a2·x² + a1·x + 1 (default seed 000 eq. 1),
+/// on the whole stage (`form = whole`, default: the damping scales with it, eq. 13–15) or
+/// on its elastic spring only (`form = elastic`, [`AmplitudeForm::Elastic`]).
 /// A stage given by `stiffness` is first written as 8 elements, 4 per side, on pitch
-/// diameter `pitch_diameter_m` (default 0.2 m) with the same static stiffness.
+/// diameter `pitch_diameter_m` (default 0.2 m) with the same static stiffness. `a2` is
+/// taken up to [`A2_MAX_PER_MM2`].
 pub(crate) fn amplitude(model: &mut Model, spec: &EffectSpec) -> Result<Applied, EffectError> {
-    let mut p = Params::new(spec, &["connection", "a2", "a1", "pitch_diameter_m"])?;
+    let mut p = Params::new(
+        spec,
+        &["connection", "a2", "a1", "pitch_diameter_m", "form"],
+    )?;
     let j = stage_index(model, &mut p)?;
-    let a2 = p.number("a2", SEED_AMPLITUDE_POLY[0], 0.0, 1.0)?;
+    // Read only when given, so the seed form resolves to the same keys as before.
+    let form = match spec.params.contains_key("form") {
+        false => AmplitudeForm::Whole,
+        true => {
+            let key = p.text("form", None)?;
+            AmplitudeForm::from_key(&key)
+                .ok_or_else(|| p.bad("form", format!("`{key}`: expected whole or elastic")))?
+        }
+    };
+    let a2 = p.number("a2", SEED_AMPLITUDE_POLY[0], 0.0, A2_MAX_PER_MM2)?;
     let a1 = p.number("a1", SEED_AMPLITUDE_POLY[1], -0.5, 0.5)?;
     let direct = match &stage_mut(model, j)?.stiffness {
         RubberStiffness::Direct(k) => Some(*k),
@@ -66,7 +92,7 @@ pub(crate) fn amplitude(model: &mut Model, spec: &EffectSpec) -> Result<Applied,
         return Err(p.bad("pitch_diameter_m", "the stage already has elements"));
     }
     if let Some(k) = direct {
-        let d = p.number("pitch_diameter_m", 0.2, 0.02, 5.0)?;
+        let d = p.number("pitch_diameter_m", DEFAULT_PITCH_DIAMETER_M, 0.02, 5.0)?;
         let mut e = RubberElements {
             count: 8,
             per_side: 4,
@@ -84,10 +110,15 @@ pub(crate) fn amplitude(model: &mut Model, spec: &EffectSpec) -> Result<Applied,
         coeffs: [a2, a1, 1.0],
         range: None,
     });
+    stage.amplitude_form = form;
     let name = &model.connections[j].name;
+    let what = match form {
+        AmplitudeForm::Whole => "stiffness and damping",
+        AmplitudeForm::Elastic => "elastic stiffness only, damping the user's",
+    };
     let summary = format!(
         "rubber stage `{name}` stiffens with the element deformation x (mm): \
-         α_x = {a2}·x² + {a1}·x + 1 (seed 000 eq. 1 form)"
+         α_x = {a2}·x² + {a1}·x + 1 (seed 000 eq. 1 form) on its {what}"
     );
     Ok((p.resolved, summary))
 }

@@ -3,6 +3,7 @@
 //! ([`validate`], [`error`]), the gear tree ([`graph`]), the rubber coupling law of
 //! seed 000 ([`rubber`]) and the presets shipped in the binary ([`presets`]).
 
+pub mod amplitude_form;
 pub mod engine_types;
 pub mod error;
 pub mod frequency_law;
@@ -21,6 +22,7 @@ mod validate_engine;
 pub mod validate_scale;
 pub mod write;
 
+pub use amplitude_form::AmplitudeForm;
 pub use engine_types::*;
 pub use error::ModelError;
 pub use frequency_law::PowerLaw;

@@ -13,7 +13,8 @@ use super::key_lines::{KeyLines, Lines};
 use super::read_sections::{engine, expect, harmonic, load, operation};
 use super::spanned::Tab;
 use super::{
-    Connection, ConnectionKind, Expect, Gear, Inertia, Model, Operation, Poly, PowerLaw,
+    AmplitudeForm, Connection, ConnectionKind, Expect, Gear, Inertia, Model, Operation, Poly,
+    PowerLaw,
     RubberElements, RubberStage, RubberStiffness, Shaft, Thermal,
 };
 use super::{ModelError, validate};
@@ -174,6 +175,7 @@ fn connection(t: &Tab) -> Result<Connection, ModelError> {
                 "thermal",
                 "amplitude_poly",
                 "amplitude_poly_range",
+                "amplitude_form",
                 "frequency_poly",
                 "frequency_poly_range",
                 "frequency_power_law",
@@ -261,11 +263,21 @@ fn rubber(t: &Tab) -> Result<ConnectionKind, ModelError> {
             })
         }
     };
+    let amplitude_form = match t.opt_str("amplitude_form")? {
+        None => AmplitudeForm::default(),
+        Some(key) => AmplitudeForm::from_key(&key).ok_or_else(|| {
+            ModelError::at(
+                t.key("amplitude_form"),
+                format!("unknown amplitude_form `{key}` (expected whole or elastic)"),
+            )
+        })?,
+    };
     Ok(ConnectionKind::Rubber(RubberStage {
         stiffness,
         psi: t.f64("psi")?,
         temperature_c: t.f64_or("temperature_c", 25.0)?,
         amplitude_poly: amplitude?,
+        amplitude_form,
         frequency_poly: frequency?,
         frequency_power_law,
         temperature_stiffness_poly: temp_k?,

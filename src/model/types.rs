@@ -6,6 +6,7 @@
 //! All quantities are SI unless the field name says otherwise.
 
 /// Reserved node name for the frame.
+use super::amplitude_form::AmplitudeForm;
 use super::engine_types::{Engine, Harmonic};
 use super::operation_types::{Expect, Load, Operation};
 
@@ -164,6 +165,8 @@ pub struct RubberStage {
     pub temperature_c: f64,
     /// α_x(x), x the element's radial deformation in mm (seed 000 eq. 1); needs elements.
     pub amplitude_poly: Option<Poly>,
+    /// What α_x scales (`amplitude_form`, default [`AmplitudeForm::Whole`]).
+    pub amplitude_form: AmplitudeForm,
     /// α_f(f), f the vibration frequency in Hz (seed 000 eq. 9).
     pub frequency_poly: Option<Poly>,
     /// A causal power law in place of `frequency_poly` (issue 14,

@@ -11,7 +11,7 @@ use super::graph;
 use super::names::check_name;
 use super::validate_engine;
 use super::validate_scale;
-use super::{ConnectionKind, GROUND, Model, Poly, RubberStage, RubberStiffness};
+use super::{AmplitudeForm, ConnectionKind, GROUND, Model, Poly, RubberStage, RubberStiffness};
 
 /// Result of one check.
 pub(crate) type Check = Result<(), ModelError>;
@@ -223,6 +223,12 @@ fn rubber(key: &str, r: &RubberStage) -> Check {
         fail(
             k("amplitude_poly"),
             "`amplitude_poly` needs `elements` (the deformation is measured at the elements)",
+        )?;
+    }
+    if r.amplitude_form != AmplitudeForm::default() && r.amplitude_poly.is_none() {
+        fail(
+            k("amplitude_form"),
+            "`amplitude_form` is given without `amplitude_poly`",
         )?;
     }
     let polys = [

@@ -6,8 +6,8 @@
 use std::path::Path;
 
 use super::{
-    Connection, ConnectionKind, Engine, Expect, Harmonic, HarmonicAmplitude, Model, Operation,
-    Poly, Pressure, PressureCurve, RubberStage, RubberStiffness,
+    AmplitudeForm, Connection, ConnectionKind, Engine, Expect, Harmonic, HarmonicAmplitude, Model,
+    Operation, Poly, Pressure, PressureCurve, RubberStage, RubberStiffness,
 };
 
 /// Arrays longer than this (written on one line) are wrapped.
@@ -181,6 +181,9 @@ fn rubber(out: &mut String, r: &RubberStage) {
             ("reference_hz", num(law.reference_hz)),
         ];
         kv(out, "frequency_power_law", inline(&fields));
+    }
+    if r.amplitude_form != AmplitudeForm::default() {
+        kv(out, "amplitude_form", string(r.amplitude_form.key()));
     }
     if let Some(t) = &r.thermal {
         let fields = [

@@ -2,7 +2,7 @@
 //! stage becomes one — linearized at its static twist (seed 000 eq. 1–2, 13, 15).
 
 use super::error::PhysicsError;
-use crate::model::{Poly, PowerLaw, RubberStage};
+use crate::model::{AmplitudeForm, Poly, PowerLaw, RubberStage};
 
 /// How an element's stiffness behaves.
 #[derive(Debug, Clone, PartialEq)]
@@ -23,8 +23,12 @@ pub enum ElementLaw {
         frequency_poly: Option<Poly>,
         /// A causal power law in place of α_f (its loss is in `loss_factor` already).
         frequency_power_law: Option<PowerLaw>,
-        /// Loss factor `ξ_T = ψ/2π·α_Tξ`.
+        /// Loss factor `ξ_T = ψ/2π·α_Tξ` of the part `base·α_f`.
         loss_factor: f64,
+        /// Referred stiffness added without loss or frequency dependence, N·m/rad: the
+        /// stiffening of the equilibrium spring of an `amplitude_form = "elastic"` stage,
+        /// `c_Tstat·(dα_x x/dx − 1)·α_f(0)·α_Tc·r²` (then the base has no α_x); 0 else.
+        elastic_nm_per_rad: f64,
     },
     /// A rubber stage as the time domain represents it: the same base stiffness times
     /// the complex stiffness of a causal generalized Maxwell chain
@@ -37,6 +41,8 @@ pub enum ElementLaw {
         equilibrium: f64,
         /// Arms `(k_j, τ_j)`: relative stiffness and relaxation time, s.
         arms: Vec<(f64, f64)>,
+        /// As for [`ElementLaw::Rubber`], N·m/rad.
+        elastic_nm_per_rad: f64,
     },
 }
 
@@ -70,25 +76,38 @@ impl Element {
                 frequency_poly,
                 frequency_power_law,
                 loss_factor,
+                elastic_nm_per_rad,
             } => {
                 let alpha_f = match (frequency_power_law, frequency_poly) {
                     (Some(law), _) => law.storage(frequency_hz),
                     (None, Some(p)) => p.eval(frequency_hz),
                     (None, None) => 1.0,
                 };
-                (base_stiffness_nm_per_rad * alpha_f, *loss_factor)
+                let lossy = base_stiffness_nm_per_rad * alpha_f;
+                if *elastic_nm_per_rad == 0.0 {
+                    return (lossy, *loss_factor);
+                }
+                with_elastic(lossy, lossy * loss_factor, *elastic_nm_per_rad)
             }
             ElementLaw::Causal {
                 base_stiffness_nm_per_rad,
                 equilibrium,
                 arms,
+                elastic_nm_per_rad,
             } => {
                 let omega = std::f64::consts::TAU * frequency_hz;
                 let (re, im) = arms.iter().fold((*equilibrium, 0.0), |(re, im), (k, tau)| {
                     let x = omega * tau;
                     (re + k * x * x / (1.0 + x * x), im + k * x / (1.0 + x * x))
                 });
-                (base_stiffness_nm_per_rad * re, im / re.max(1e-12))
+                if *elastic_nm_per_rad == 0.0 {
+                    return (base_stiffness_nm_per_rad * re, im / re.max(1e-12));
+                }
+                with_elastic(
+                    base_stiffness_nm_per_rad * re,
+                    base_stiffness_nm_per_rad * im,
+                    *elastic_nm_per_rad,
+                )
             }
         }
     }
@@ -117,6 +136,18 @@ impl Element {
             } | ElementLaw::Causal { .. }
         )
     }
+}
+
+/// Storage stiffness and loss factor of a lossy part (storage `storage`, loss modulus
+/// `loss`, N·m/rad) beside a lossless spring `elastic`: `(storage + elastic, loss/(…))`.
+fn with_elastic(storage: f64, loss: f64, elastic: f64) -> (f64, f64) {
+    let k = storage + elastic;
+    let loss_factor = if storage == 0.0 && loss == 0.0 {
+        0.0
+    } else {
+        loss / k.max(1e-12 * storage.abs())
+    };
+    (k, loss_factor)
 }
 
 /// The rubber law linearized at the static twist that `torque_nm` (own shaft) puts on it.
@@ -154,13 +185,143 @@ pub(super) fn rubber_law(
             });
         }
     }
+    let tangent = state.tangent_stiffness_nm_per_rad * r2;
+    let (base, elastic) = match stage.amplitude_form {
+        AmplitudeForm::Whole => (tangent, 0.0),
+        // The equilibrium spring k∞ = α_f(0) alone stiffens (as in the time domain).
+        AmplitudeForm::Elastic => {
+            let base = tangent / state.alpha_x_tangent;
+            let k_inf = match (&stage.frequency_power_law, &stage.frequency_poly) {
+                (Some(law), _) => law.storage(0.0),
+                (None, Some(p)) => p.eval(0.0),
+                (None, None) => 1.0,
+            };
+            (base, base * (state.alpha_x_tangent - 1.0) * k_inf)
+        }
+    };
     Ok((
         ElementLaw::Rubber {
-            base_stiffness_nm_per_rad: state.tangent_stiffness_nm_per_rad * r2,
+            base_stiffness_nm_per_rad: base,
             frequency_poly: stage.frequency_poly.clone(),
             frequency_power_law: stage.frequency_power_law,
             loss_factor: state.loss_factor,
+            elastic_nm_per_rad: elastic,
         },
         twist,
     ))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::{RubberElements, RubberStiffness};
+
+    /// A stage of 8 elements on a 0.2 m pitch diameter (100 mm of element deformation
+    /// per rad) with a cubic spring, α_x = 1 + a2·x² (a1 = 0), x in mm.
+    fn cubic_stage(a2: f64, form: AmplitudeForm) -> RubberStage {
+        let mut e = RubberElements {
+            count: 8,
+            per_side: 4,
+            pitch_diameter_m: 0.2,
+            radial_stiffness_n_per_m: 1.0,
+        };
+        e.radial_stiffness_n_per_m = 5.0e4 / e.torsional_stiffness_nm_per_rad();
+        RubberStage {
+            stiffness: RubberStiffness::Elements(e),
+            psi: 0.6,
+            temperature_c: 25.0,
+            amplitude_poly: Some(Poly {
+                coeffs: [a2, 0.0, 1.0],
+                range: None,
+            }),
+            amplitude_form: form,
+            frequency_poly: None,
+            frequency_power_law: None,
+            temperature_stiffness_poly: None,
+            temperature_damping_poly: None,
+            thermal: None,
+        }
+    }
+
+    #[test]
+    fn an_elastic_stage_stiffens_by_the_cubic_tangent_and_keeps_its_loss_modulus() {
+        // k0 = 5e4 N·m/rad; T = k0·(1 + a2·(100 θ)²)·θ (eq. 1–2, 13). At T = 150 N·m and
+        // a2 = 20 /mm²: θ solves the cubic; the tangent is k0·(1 + 3·a2·(100 θ)²).
+        let (k0, a2, torque, xi) = (5.0e4, 20.0, 150.0, 0.6 / std::f64::consts::TAU);
+        let mut w = Vec::new();
+        let whole = rubber_law(
+            &cubic_stage(a2, AmplitudeForm::Whole),
+            "c",
+            torque,
+            25.0,
+            1.0,
+            &mut w,
+        );
+        let elastic = rubber_law(
+            &cubic_stage(a2, AmplitudeForm::Elastic),
+            "c",
+            torque,
+            25.0,
+            1.0,
+            &mut w,
+        );
+        let ((whole, twist), (elastic, twist_e)) = (whole.unwrap(), elastic.unwrap());
+        // The static twist is the same in both forms: the cubic's root.
+        assert_eq!(twist, twist_e);
+        let x2 = (100.0 * twist) * (100.0 * twist);
+        assert!((k0 * (1.0 + a2 * x2) * twist - torque).abs() < 1e-9 * torque);
+        let tangent = k0 * (1.0 + 3.0 * a2 * x2);
+        assert!(
+            tangent > 1.2 * k0,
+            "the test must stiffen noticeably: {tangent}"
+        );
+        let el = Element {
+            connection: 0,
+            from_dof: Some(0),
+            to_dof: None,
+            torque_ratio: 1.0,
+            law: whole,
+        };
+        let (k_w, eta_w) = el.stiffness_at(40.0);
+        let (k_e, eta_e) = Element { law: elastic, ..el }.stiffness_at(40.0);
+        // Storage: the tangent in both forms (1e-12: rounding of a few products).
+        assert!(
+            (k_w - tangent).abs() < 1e-12 * tangent,
+            "{k_w} vs {tangent}"
+        );
+        assert!(
+            (k_e - tangent).abs() < 1e-12 * tangent,
+            "{k_e} vs {tangent}"
+        );
+        // Loss modulus: scaled by the stiffening (whole), the user's k0·ξ (elastic).
+        assert!((eta_w - xi).abs() < 1e-12);
+        assert!((eta_e * k_e - xi * k0).abs() < 1e-12 * xi * k0, "{eta_e}");
+    }
+
+    #[test]
+    fn a_causal_law_adds_its_elastic_spring_without_loss() {
+        // One arm at τ = 1/(2π·40 Hz): at 40 Hz it adds k1/2 storage and k1/2 loss.
+        let (k0, k1, extra) = (5.0e4, 0.1, 1.2e4);
+        let law = |elastic_nm_per_rad| ElementLaw::Causal {
+            base_stiffness_nm_per_rad: k0,
+            equilibrium: 1.0,
+            arms: vec![(k1, 1.0 / (std::f64::consts::TAU * 40.0))],
+            elastic_nm_per_rad,
+        };
+        let el = |l| Element {
+            connection: 0,
+            from_dof: Some(0),
+            to_dof: None,
+            torque_ratio: 1.0,
+            law: l,
+        };
+        let (k, eta) = el(law(extra)).stiffness_at(40.0);
+        let storage = k0 * (1.0 + k1 / 2.0);
+        assert!((k - (storage + extra)).abs() < 1e-9 * k, "{k}");
+        assert!((eta * k - k0 * k1 / 2.0).abs() < 1e-9 * k0 * k1, "{eta}");
+        let (k_plain, eta_plain) = el(law(0.0)).stiffness_at(40.0);
+        assert!(
+            (k_plain - storage).abs() < 1e-9 * k && (eta_plain * k_plain - eta * k).abs() < 1e-6
+        );
+    }
 }

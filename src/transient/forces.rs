@@ -6,7 +6,7 @@
 
 use super::plant::{Plant, PlantElement, PlantLaw, RubberPlant, Temperature};
 use super::speed::SpeedProfile;
-use crate::model::HarmonicAmplitude;
+use crate::model::{AmplitudeForm, HarmonicAmplitude};
 use crate::physics::excitation::interpolate_held;
 use std::f64::consts::TAU;
 
@@ -214,7 +214,9 @@ fn small_sin_cos(x: f64) -> (f64, f64) {
 /// Secant amplitude factor, temperature factors and the chain: the stage's torque (own
 /// shaft) is `c_Tstat·α_x(x)·α_Tc(T)·[k∞ φ + α_Tξ(T) (Σ k_j (φ − q_j) + c_v φ̇)]` (seed
 /// 000 eq. 1–2, 10–15 with the causal chain of [`super::maxwell`]; `c_v` the dashpot of
-/// the arms taken out, [`RubberPlant::viscous_s`]). `[twist_own, rate_own]`: rad, rad/s.
+/// the arms taken out, [`RubberPlant::viscous_s`]). With `amplitude_form = "elastic"`
+/// α_x moves inside onto the equilibrium spring, `c_Tstat·α_Tc(T)·[α_x(x)·k∞ φ + …]`: the
+/// arms, which carry the loss, are not stiffened. `[twist_own, rate_own]`: rad, rad/s.
 fn rubber_state(
     r: &RubberPlant,
     [twist_own, rate_own]: [f64; 2],
@@ -238,7 +240,13 @@ fn rubber_state(
         .temperature_damping_poly
         .as_ref()
         .map_or(1.0, |p| p.eval(temperature));
-    let scale = r.static_stiffness_nm_per_rad * alpha_x * alpha_tc;
+    // `Whole`: α_x scales the stage, arms (loss) with it (seed 000 eq. 13–15).
+    // `Elastic`: α_x scales only the equilibrium spring k∞ (model `amplitude_form`).
+    let (alpha_whole, alpha_equilibrium) = match r.amplitude_form {
+        AmplitudeForm::Whole => (alpha_x, 1.0),
+        AmplitudeForm::Elastic => (1.0, alpha_x),
+    };
+    let scale = r.static_stiffness_nm_per_rad * alpha_whole * alpha_tc;
     let mut arms_torque = 0.0;
     let mut arms_power = 0.0;
     let mut dy = dy;
@@ -252,7 +260,8 @@ fn rubber_state(
     }
     arms_torque += r.viscous_s * rate_own;
     arms_power += r.viscous_s * rate_own * rate_own;
-    let torque_own = scale * (r.chain.equilibrium * twist_own + alpha_txi * arms_torque);
+    let torque_own =
+        scale * (alpha_equilibrium * r.chain.equilibrium * twist_own + alpha_txi * arms_torque);
     ElementState {
         torque_ref_nm: torque_own * ratio,
         power_w: scale * alpha_txi * arms_power,
@@ -275,5 +284,84 @@ mod tests {
         }
         assert!((wrap(-0.5, 4.0) - 3.5).abs() < 1e-15 && (wrap(4.5, 4.0) - 0.5).abs() < 1e-15);
         assert!((wrap(-9.0, 4.0) - 3.0).abs() < 1e-15 && (wrap(13.0, 4.0) - 1.0).abs() < 1e-15);
+    }
+
+    /// A stage of k0 = 5e4 N·m/rad with α_x = 1 + a2·x² (x = 100 mm/rad · |φ|), the
+    /// `arms` of its chain, at 25 °C without temperature laws.
+    fn cubic_plant(a2: f64, form: AmplitudeForm, arms: Vec<(f64, f64)>) -> RubberPlant {
+        use crate::model::Poly;
+        use crate::transient::maxwell::MaxwellChain;
+        RubberPlant {
+            static_stiffness_nm_per_rad: 5.0e4,
+            mm_per_rad: Some(100.0),
+            amplitude_poly: Some(Poly {
+                coeffs: [a2, 0.0, 1.0],
+                range: None,
+            }),
+            amplitude_form: form,
+            temperature_stiffness_poly: None,
+            temperature_damping_poly: None,
+            chain: MaxwellChain {
+                equilibrium: 1.0,
+                arms,
+                band_hz: [10.0, 100.0],
+                stiffness_error: 0.0,
+                loss_error: 0.0,
+            },
+            arm_offset: 0,
+            viscous_s: 0.0,
+            temperature: Temperature::Fixed(25.0),
+        }
+    }
+
+    #[test]
+    fn a_cubic_stage_has_the_harmonic_balance_stiffness_in_either_form() {
+        // T = k0·(1 + a2·(100 φ)²)·φ; for φ = A sin ωt its first harmonic is
+        // k0·(1 + ¾·a2·(100 A)²)·A (harmonic balance of a cubic spring).
+        let (k0, a2, amp): (f64, f64, f64) = (5.0e4, 20.0, 2.0e-3);
+        let expected = k0 * (1.0 + 0.75 * a2 * (100.0 * amp).powi(2));
+        for form in [AmplitudeForm::Whole, AmplitudeForm::Elastic] {
+            let plant = cubic_plant(a2, form, Vec::new());
+            let n = 720;
+            let b1: f64 = (0..n)
+                .map(|i| {
+                    let s = (TAU * i as f64 / n as f64).sin();
+                    let t = rubber_state(&plant, [amp * s, 0.0], 1.0, &[], None).torque_ref_nm;
+                    2.0 / n as f64 * t * s
+                })
+                .sum();
+            // The rectangle rule is exact for this trigonometric polynomial (degree 3 <
+            // 720): only rounding remains.
+            let k_eq = b1 / amp;
+            assert!(
+                (k_eq - expected).abs() < 1e-12 * expected,
+                "{form:?}: {k_eq} vs {expected}"
+            );
+        }
+    }
+
+    #[test]
+    fn the_elastic_form_leaves_the_arms_and_their_loss_unstiffened() {
+        // At twist φ with one arm stretched by s: elastic T = k0·(α(φ)·φ + k1·s), loss
+        // k0·k1·s²/τ; whole T = k0·α(φ)·(φ + k1·s), loss α(φ)·k0·k1·s²/τ.
+        let (k0, a2, phi, s, k1, tau): (f64, f64, f64, f64, f64, f64) =
+            (5.0e4, 20.0, 1.5e-3, 2.0e-4, 0.3, 0.01);
+        let alpha = 1.0 + a2 * (100.0 * phi).powi(2);
+        let y = [phi - s];
+        let at = |form| {
+            let plant = cubic_plant(a2, form, vec![(k1, tau)]);
+            let mut dy = [0.0];
+            let st = rubber_state(&plant, [phi, 0.0], 1.0, &y, Some(&mut dy));
+            assert!((dy[0] - s / tau).abs() < 1e-12 * s / tau);
+            (st.torque_ref_nm, st.power_w)
+        };
+        let (t_e, p_e) = at(AmplitudeForm::Elastic);
+        let (t_w, p_w) = at(AmplitudeForm::Whole);
+        let loss = k0 * k1 * s * s / tau;
+        let close = |a: f64, b: f64| (a - b).abs() < 1e-12 * b.abs();
+        assert!(close(t_e, k0 * (alpha * phi + k1 * s)), "{t_e}");
+        assert!(close(p_e, loss), "{p_e}");
+        assert!(close(t_w, k0 * alpha * (phi + k1 * s)), "{t_w}");
+        assert!(close(p_w, alpha * loss), "{p_w}");
     }
 }

@@ -8,7 +8,7 @@
 
 use super::TransientError;
 use super::maxwell::{MaxwellChain, excited_band_hz};
-use crate::model::{ConnectionKind, GROUND, HarmonicAmplitude, Model, Poly};
+use crate::model::{AmplitudeForm, ConnectionKind, GROUND, HarmonicAmplitude, Model, Poly};
 use crate::physics::PhysicsError;
 use crate::physics::{OperatingPoint, System, engine};
 
@@ -22,8 +22,10 @@ pub struct RubberPlant {
     pub static_stiffness_nm_per_rad: f64,
     /// Element pitch radius × 1000 (mm of radial deformation per rad), when from elements.
     pub mm_per_rad: Option<f64>,
-    /// α_x(x), α_Tc(T), α_Tξ(T).
+    /// α_x(x), x in mm of element deformation.
     pub amplitude_poly: Option<Poly>,
+    /// What α_x scales: the whole stage or its equilibrium spring only.
+    pub amplitude_form: AmplitudeForm,
     /// α_Tc(T).
     pub temperature_stiffness_poly: Option<Poly>,
     /// α_Tξ(T).
@@ -296,6 +298,7 @@ impl Plant {
                             static_stiffness_nm_per_rad: stage.static_stiffness_nm_per_rad(),
                             mm_per_rad: stage.pitch_radius_m().map(|r| r * 1000.0),
                             amplitude_poly: stage.amplitude_poly.clone(),
+                            amplitude_form: stage.amplitude_form,
                             temperature_stiffness_poly: stage.temperature_stiffness_poly.clone(),
                             temperature_damping_poly: stage.temperature_damping_poly.clone(),
                             chain,
