@@ -246,7 +246,10 @@ pub fn verify(
         {
             continue;
         }
-        let effects: Vec<Effect> = chosen.iter().map(|k| screened[*k].candidate.effect).collect();
+        let effects: Vec<Effect> = chosen
+            .iter()
+            .map(|k| screened[*k].candidate.effect)
+            .collect();
         if !chosen.iter().any(chosen_effect) && distinct(&effects) >= VERIFIED_EFFECTS {
             continue;
         }

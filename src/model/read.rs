@@ -14,8 +14,7 @@ use super::read_sections::{engine, expect, harmonic, load, operation};
 use super::spanned::Tab;
 use super::{
     AmplitudeForm, Connection, ConnectionKind, Expect, Gear, Inertia, Model, Operation, Poly,
-    PowerLaw,
-    RubberElements, RubberStage, RubberStiffness, Shaft, Thermal,
+    PowerLaw, RubberElements, RubberStage, RubberStiffness, Shaft, Thermal,
 };
 use super::{ModelError, validate};
 
