@@ -6,7 +6,6 @@
 //! | effect | where | fitted | start |
 //! |---|---|---|---|
 //! | `coupling_amplitude_nonlinearity` | rubber stage | `a2` of seed 000 eq. 1 (per mm², ≤ 0.5) | 0.0152 |
-//! | `coupling_amplitude_nonlinearity` (`form = elastic`, damping not scaled) | rubber stage | `a2` (bounds from the full-load twist, [`super::candidates_amplitude`]) | 10 % at full load |
 //! | `coupling_frequency_dependence` | rubber stage | `scale` of seed 000 eq. 9 | 0.1 |
 //! | `coupling_frequency_dependence` (`form = power_law`) | rubber stage | `exponent` of a causal power law (loss tan(nπ/2)) | 0.05 |
 //! | `coupling_thermal_drift` | rubber stage, with a long run | `capacity_j_per_k` (eq. 10–11) | 300 |
@@ -19,12 +18,11 @@
 //! | `sensor_artifact` | each station, `kind = tape_joint` | tape `joint_fraction` | 0.02 |
 //! | `sensor_artifact` | each station, `kind = pitch_error` | `error_deg` (eccentricity) | 0.05 |
 
-use super::candidates_amplitude::{amplitude_param, full_load_deformation_mm};
 use super::fit::Bounds;
 use super::sensor::{ArtifactForm, TapeJoint};
 use crate::effects::rubber_power as power;
 use crate::effects::{Effect, EffectSpec, build_truth};
-use crate::model::{AmplitudeForm, ConnectionKind, Model};
+use crate::model::{ConnectionKind, Model};
 use std::sync::Arc;
 
 /// A fitted parameter: its key, start, bounds and whether it is fitted in log.
@@ -156,7 +154,7 @@ pub fn candidates(model: &Model, stations: &[String], long_run: bool) -> Vec<Can
         .iter()
         .map(|n| n.inertia_kg_m2)
         .fold(f64::INFINITY, f64::min);
-    for (j, c) in model.connections.iter().enumerate() {
+    for c in &model.connections {
         let at = || vec![("connection", c.name.clone())];
         match &c.kind {
             ConnectionKind::Rubber(_) => {
@@ -170,15 +168,6 @@ pub fn candidates(model: &Model, stations: &[String], long_run: bool) -> Vec<Can
                     Effect::CouplingAmplitudeNonlinearity,
                     param("a2", 0.0152, 0.0, 0.5, false),
                 ));
-                out.push(Candidate {
-                    effect: Effect::CouplingAmplitudeNonlinearity,
-                    fixed: vec![
-                        ("connection", c.name.clone()),
-                        ("form", AmplitudeForm::Elastic.key().to_string()),
-                    ],
-                    param: amplitude_param(full_load_deformation_mm(model, j)),
-                    artifact_gains: None,
-                });
                 out.push(add(
                     Effect::CouplingFrequencyDependence,
                     param("scale", 0.1, 0.0, 1.0, false),
