@@ -291,14 +291,7 @@ mod tests {
             "coupling_frequency_dependence at coupling (power_law)"
         );
         let (with, _) = causal.apply(&model, 0.1).unwrap();
-        let law = with
-            .connections
-            .iter()
-            .find_map(|c| match &c.kind {
-                ConnectionKind::Rubber(r) => r.frequency_power_law,
-                _ => None,
-            })
-            .unwrap();
+        let law = crate::model::frequency_law::first_power_law(&with).unwrap();
         assert_eq!(law.exponent, 0.1);
     }
 }

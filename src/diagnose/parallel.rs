@@ -14,18 +14,19 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::mpsc;
 
 /// `each(k)` for `k` in `0..n` on up to `threads` worker threads, results in the order of
-/// `k`. `done(k)` is called on the calling thread as item `k` finishes (in the order they
-/// finish); an error from it stops handing out items and is returned once the running
+/// `k`. `done(k, finished)` is called on the calling thread as item `k` finishes (in the
+/// order they finish), with the number finished so far, this one included; an error from it stops handing out items and is returned once the running
 /// ones end. A panic in `each` propagates, as if it had been called in a loop.
 pub fn map_reporting<T: Send>(
     n: usize,
     threads: usize,
     each: &(dyn Fn(usize) -> T + Sync),
-    done: &mut dyn FnMut(usize) -> Result<(), DiagnoseError>,
+    done: &mut dyn FnMut(usize, usize) -> Result<(), DiagnoseError>,
 ) -> Result<Vec<T>, DiagnoseError> {
     let mut slots: Vec<Option<T>> = (0..n).map(|_| None).collect();
     let next = AtomicUsize::new(0);
     let mut stopped: Option<DiagnoseError> = None;
+    let mut finished = 0usize;
     std::thread::scope(|scope| {
         // A rendezvous channel: a worker hands its result over before it takes the next
         // item, so a stop from `done` is seen after at most one more item per worker
@@ -50,8 +51,9 @@ pub fn map_reporting<T: Send>(
         // Ends when every worker has ended (their senders dropped).
         for (k, value) in rx {
             slots[k] = Some(value);
+            finished += 1;
             if stopped.is_none()
-                && let Err(e) = done(k)
+                && let Err(e) = done(k, finished)
             {
                 next.store(n, Ordering::Relaxed);
                 stopped = Some(e);
@@ -76,15 +78,17 @@ mod tests {
     #[test]
     fn ordered_reported_and_cancellable() {
         for threads in [1, 2, 5] {
-            let mut seen = Vec::new();
-            let out = map_reporting(7, threads, &|k| k * k, &mut |k| {
+            let (mut seen, mut counts) = (Vec::new(), Vec::new());
+            let out = map_reporting(7, threads, &|k| k * k, &mut |k, finished| {
                 seen.push(k);
+                counts.push(finished);
                 Ok(())
             })
             .unwrap();
             assert_eq!(out, vec![0, 1, 4, 9, 16, 25, 36]);
             seen.sort_unstable();
             assert_eq!(seen, (0..7).collect::<Vec<_>>());
+            assert_eq!(counts, (1..=7).collect::<Vec<_>>());
         }
         let ran = AtomicUsize::new(0);
         let r = map_reporting(
@@ -94,13 +98,13 @@ mod tests {
                 ran.fetch_add(1, Ordering::Relaxed);
                 k
             },
-            &mut |_| Err(DiagnoseError::Cancelled),
+            &mut |_, _| Err(DiagnoseError::Cancelled),
         );
         assert_eq!(r, Err(DiagnoseError::Cancelled));
         // One thread: the first item ran, and at most the one handed out meanwhile.
         assert!(ran.load(Ordering::Relaxed) <= 2);
         assert_eq!(
-            map_reporting(0, 2, &|k| k, &mut |_| Ok(())).unwrap(),
+            map_reporting(0, 2, &|k| k, &mut |_, _| Ok(())).unwrap(),
             Vec::<usize>::new()
         );
     }

@@ -60,7 +60,6 @@ pub fn second_starts(
         .collect();
     // Each candidate's fit from the user's values on its own, side by side
     // ([`super::parallel`]), taken in the list's order.
-    let mut finished = 0usize;
     let fits = parallel::map_reporting(
         linear.len(),
         cx.options.threads,
@@ -72,8 +71,7 @@ pub fn second_starts(
                 ITERATIONS,
             )
         },
-        &mut |k| {
-            finished += 1;
+        &mut |k, finished| {
             progress(
                 finished,
                 linear.len(),
@@ -122,7 +120,7 @@ pub fn second_starts(
                 e.value,
             )
         },
-        &mut |_| Ok(()),
+        &mut |_, _| Ok(()),
     )?;
     for ((i, _), run) in chosen.into_iter().zip(runs) {
         let run = match run {

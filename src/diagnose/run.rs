@@ -101,13 +101,11 @@ pub fn diagnose(
     let mut implausible: Vec<(String, String)> = Vec::new();
     // Each candidate is screened on its own, side by side ([`super::parallel`]); the
     // results are taken in the list's order.
-    let mut finished = 0usize;
     let results = parallel::map_reporting(
         list.len(),
         options.threads,
         &|k| screen_one(&cx, &plain_fit, &list[k]),
-        &mut |k| {
-            finished += 1;
+        &mut |k, finished| {
             step(
                 0.3 + 0.2 * finished as f64 / list.len() as f64,
                 &format!("screened {}", list[k].name()),

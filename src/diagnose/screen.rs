@@ -256,13 +256,11 @@ pub fn verify(
         chosen.push(i);
     }
     // Each chosen candidate is verified on its own, side by side ([`super::parallel`]).
-    let mut finished = 0usize;
     let results = super::parallel::map_reporting(
         chosen.len(),
         cx.options.threads,
         &|k| verify_one(cx, plain, &screened[chosen[k]]),
-        &mut |k| {
-            finished += 1;
+        &mut |k, finished| {
             progress(
                 finished,
                 chosen.len(),

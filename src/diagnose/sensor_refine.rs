@@ -53,7 +53,7 @@ pub fn refine_best_artifact(
                 .map(|s| cx.rounds(s.clone(), Some(&c), VERIFY_ROUNDS, None))
                 .map_err(Clone::clone)
         },
-        &mut |_| Ok(()),
+        &mut |_, _| Ok(()),
     )?;
     for fit in fits {
         let stepped = match fit {

@@ -55,7 +55,7 @@ pub(crate) fn power_law(
 mod tests {
     use super::*;
     use crate::effects::{Effect, build_truth};
-    use crate::model::{ConnectionKind, parse_model, presets};
+    use crate::model::{parse_model, presets};
 
     #[test]
     fn puts_the_law_on_the_stage() {
@@ -66,15 +66,7 @@ mod tests {
             .with("exponent", 0.12)
             .with("reference_hz", 30.0);
         let truth = build_truth(&user, &spec, 0.0, 0).unwrap();
-        let law = truth
-            .model
-            .connections
-            .iter()
-            .find_map(|c| match &c.kind {
-                ConnectionKind::Rubber(r) => r.frequency_power_law,
-                _ => None,
-            })
-            .unwrap();
+        let law = crate::model::frequency_law::first_power_law(&truth.model).unwrap();
         assert_eq!(law.exponent, 0.12);
         assert_eq!(law.reference_hz, 30.0);
         assert!(truth.effect.summary.contains("tan(nπ/2) = 0.1908"));

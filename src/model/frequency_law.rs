@@ -60,6 +60,15 @@ impl PowerLaw {
     }
 }
 
+/// The power law of the first rubber stage of `model` that has one (for tests).
+#[cfg(test)]
+pub(crate) fn first_power_law(model: &super::Model) -> Option<PowerLaw> {
+    model.connections.iter().find_map(|c| match &c.kind {
+        super::ConnectionKind::Rubber(r) => r.frequency_power_law,
+        _ => None,
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -112,7 +121,7 @@ mod tests {
     /// element, and is refused beside `frequency_poly` or out of range.
     #[test]
     fn reads_writes_and_refuses() {
-        use crate::model::{ConnectionKind, parse_model, presets, to_toml_string};
+        use crate::model::{parse_model, presets, to_toml_string};
         use crate::physics::{OperatingPoint, System};
         let base = presets::preset("diagnosis-bench").expect("shipped").text;
         let at = "psi = 1.0\n";
@@ -120,14 +129,7 @@ mod tests {
         let with = |extra: &str| base.replacen(at, &format!("{at}{extra}\n"), 1);
         let text = with("frequency_power_law = { exponent = 0.12, reference_hz = 30.0 }");
         let model = parse_model(&text, "m.toml").unwrap();
-        let law = model
-            .connections
-            .iter()
-            .find_map(|c| match &c.kind {
-                ConnectionKind::Rubber(r) => r.frequency_power_law,
-                _ => None,
-            })
-            .unwrap();
+        let law = first_power_law(&model).unwrap();
         assert_eq!(
             law,
             PowerLaw {
