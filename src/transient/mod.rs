@@ -21,6 +21,7 @@ pub mod maxwell;
 mod maxwell_cache;
 mod nnls;
 pub mod observe;
+mod periodic_start;
 pub mod plant;
 pub mod ros2;
 pub mod run;

@@ -7,6 +7,7 @@ use super::budget::{StepBudget, bound_thermal_time_constants, name_collapse, sta
 use super::dopri::Dopri5;
 use super::maxwell::MaxwellChain;
 use super::observe::{Event, take_chunk};
+use super::periodic_start::add_periodic_state;
 use super::plant::{Plant, PlantLaw, Temperature};
 use super::ros2::Ros2;
 use super::speed::SpeedProfile;
@@ -150,7 +151,10 @@ pub fn simulate_observed(
     let cycle_rad = plant.engine.as_ref().map_or(2.0 * TAU, |e| e.cycle_rad);
     let mut profile = SpeedProfile::steady(from_rpm);
     let mut mass = vec![0.0; plant.n_dof];
-    let y0 = initial_state(&plant)?;
+    let mut y0 = initial_state(&plant)?;
+    // Started on the linear periodic state: settling then only removes what the time
+    // domain adds to it ([`super::periodic_start`]).
+    add_periodic_state(model, &plant, from_rpm, options.load, &mut y0);
     let atol = tolerances(&plant);
     let cycle_s = |rpm: f64| cycle_rad / (rpm * TAU / 60.0);
     let h_max = cycle_s(from_rpm.max(to_rpm)) / options.min_steps_per_cycle.max(1.0);

@@ -1,0 +1,132 @@
+//! A run's start on its linear periodic state: the vibration the frequency domain gives at
+//! the start speed, added to the static twist of [`super::start::initial_state`].
+//!
+//! A start without vibration rings every mode. A lightly damped one (0.5 % of critical,
+//! issue 14's benches) rings for seconds, and where its frequency is near a whole number
+//! of cycle harmonics the cycle-to-cycle change that ends settling
+//! ([`super::run`]) barely sees it: validation control 1001 (mode 1 at 27.87 Hz, 0.56 %)
+//! settled at 1640 rpm with 0.45 rpm of order 1 left at the crank, where the bench
+//! measured 0.015 rpm (a 35 σ misfit named as missing physics). Started on the forced
+//! response `Θ_q` of every cycle harmonic (`(K(f)(1 + iξ) − ω²M + iωC) Θ_q = T̂_q`,
+//! [`crate::response`]), the transient is only what the time domain's nonlinearity and
+//! causal chain add, a small part of the vibration.
+//!
+//! The torque convention is [`crate::physics::excitation`]'s, `T = Re(T̂_q e^{i q θ*})`
+//! with `θ* = 0` at `t = 0` ([`super::speed::SpeedProfile::at`]), so a DOF starts at
+//! `Re Σ Θ_q` and speed `Re Σ i q Ω Θ_q`; a Maxwell arm (`u̇ = (x − u)/τ`) at
+//! `Re Σ X_q / (1 + i q Ω τ)`. Written here because no crate solves this small complex
+//! system in torsim's model terms; the solve itself is nalgebra's LU.
+
+use super::plant::{Plant, PlantLaw};
+use crate::model::Model;
+use crate::physics::{ElementLaw, Excitation, System, matrices};
+use nalgebra::{DMatrix, DVector};
+use num_complex::Complex64;
+use std::f64::consts::TAU;
+
+/// Highest cycle harmonic started on, as an order of the reference shaft: 24 (a
+/// four-stroke's 48 harmonics; the response above has decayed with the gas torque's
+/// 1/k² and the inertias' ω²).
+const HIGHEST_ORDER: f64 = 24.0;
+/// Largest start vibration accepted, rad, per DOF: beyond it the linear state is no start
+/// (a resonance the time domain passes differently) and the static start is kept.
+const LARGEST_ANGLE_RAD: f64 = 0.5;
+
+/// Adds the linear periodic state at `speed_rpm` and `load` to the static start `y`
+/// (angles, speeds and Maxwell arms of `plant`); leaves `y` as it is when the linear
+/// system cannot be solved or its state is implausibly large.
+pub fn add_periodic_state(model: &Model, plant: &Plant, speed_rpm: f64, load: f64, y: &mut [f64]) {
+    if let Some(state) = periodic_state(model, plant, speed_rpm, load) {
+        for (a, d) in y.iter_mut().zip(state) {
+            *a += d;
+        }
+    }
+}
+
+/// The periodic state's offset from the static start, or `None`.
+fn periodic_state(model: &Model, plant: &Plant, speed_rpm: f64, load: f64) -> Option<Vec<f64>> {
+    let n = plant.n_dof;
+    if speed_rpm <= 0.0 || !speed_rpm.is_finite() {
+        return None;
+    }
+    let system = causal_copy(plant);
+    if system.dof_count() != n {
+        return None;
+    }
+    let step = plant
+        .system
+        .cylinder_spectrum
+        .as_ref()
+        .map_or(0.5, |s| s.order_step);
+    let count = (HIGHEST_ORDER / step).floor() as usize;
+    let mut orders: Vec<f64> = (1..=count).map(|k| k as f64 * step).collect();
+    for h in &model.harmonics {
+        if !orders.iter().any(|q| (q - h.order).abs() < 1e-9) {
+            orders.push(h.order);
+        }
+    }
+    let excitation = Excitation::new(model, &system, load, &orders);
+    let omega_ref = speed_rpm * TAU / 60.0;
+    let mut offset = vec![0.0; plant.state_len];
+    let mut forcing = vec![Complex64::default(); n];
+    let mut dynamic = DMatrix::<Complex64>::zeros(n, n);
+    for (q, &order) in orders.iter().enumerate() {
+        let omega = order * omega_ref;
+        excitation.forcing(q, speed_rpm, &mut forcing);
+        if forcing.iter().all(|f| f.norm_sqr() == 0.0) {
+            continue;
+        }
+        matrices::dynamic_stiffness(&system, omega, &mut dynamic);
+        let theta = dynamic
+            .clone()
+            .lu()
+            .solve(&DVector::from_column_slice(&forcing))?;
+        if !theta.iter().all(|v| v.is_finite()) {
+            return None;
+        }
+        for i in 0..n {
+            offset[i] += theta[i].re;
+            offset[n + i] += (Complex64::new(0.0, omega) * theta[i]).re;
+        }
+        for e in &plant.elements {
+            if let PlantLaw::Rubber(r) = &e.law {
+                let at = |d: Option<usize>| d.map_or(Complex64::default(), |d| theta[d]);
+                let twist_own = (at(e.from_dof) - at(e.to_dof)) * e.ratio;
+                for (j, &(_, tau)) in r.chain.arms.iter().enumerate() {
+                    offset[r.arm_offset + j] += (twist_own / Complex64::new(1.0, omega * tau)).re;
+                }
+            }
+        }
+    }
+    let plausible = offset[..n].iter().all(|a| a.abs() < LARGEST_ANGLE_RAD);
+    plausible.then_some(offset)
+}
+
+/// The plant's linear system with each rubber stage as the plant integrates it (its
+/// Maxwell chain), so that the start matches the time domain's own stiffness and loss.
+fn causal_copy(plant: &Plant) -> System {
+    let mut system = plant.system.clone();
+    for e in &mut system.elements {
+        let chain = plant.elements.iter().find_map(|p| match &p.law {
+            PlantLaw::Rubber(r) if p.connection == e.connection => Some(&r.chain),
+            _ => None,
+        });
+        if let (
+            ElementLaw::Rubber {
+                base_stiffness_nm_per_rad,
+                elastic_nm_per_rad,
+                ..
+            },
+            Some(chain),
+        ) = (&e.law, chain)
+        {
+            e.law = ElementLaw::Causal {
+                base_stiffness_nm_per_rad: *base_stiffness_nm_per_rad,
+                equilibrium: chain.equilibrium,
+                arms: chain.arms.clone(),
+                elastic_nm_per_rad: *elastic_nm_per_rad,
+            };
+        }
+    }
+    system
+}
