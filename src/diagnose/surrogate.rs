@@ -14,9 +14,9 @@ use super::sensor::{self, TapeJoint};
 use super::spread::{run_factors, run_orders};
 use crate::effects::param_error::{parameter_names, scale_parameter};
 use crate::model::{ConnectionKind, Model};
-use crate::physics::{ElementLaw, Excitation, OperatingPoint, System};
+use crate::physics::{Excitation, OperatingPoint, System};
 use crate::response::forced_response_orders;
-use crate::transient::maxwell::{MaxwellChain, excited_band_hz};
+use crate::transient::maxwell::{MaxwellChain, excited_band_hz, make_causal};
 
 /// A plain parameter: its full name (`connection.shaft.stiffness`) and the node or
 /// connection it belongs to.
@@ -72,25 +72,10 @@ pub fn causal_system(model: &Model, load: f64, [lo, hi]: [f64; 2]) -> Option<Sys
     };
     let mut system = System::new(model, point).ok()?;
     let band = excited_band_hz(lo, hi, 24.0);
-    for e in &mut system.elements {
-        if let (
-            ElementLaw::Rubber {
-                base_stiffness_nm_per_rad,
-                elastic_nm_per_rad,
-                ..
-            },
-            ConnectionKind::Rubber(stage),
-        ) = (&e.law, &model.connections.get(e.connection)?.kind)
-        {
-            let chain = MaxwellChain::fit(stage, band);
-            e.law = ElementLaw::Causal {
-                base_stiffness_nm_per_rad: *base_stiffness_nm_per_rad,
-                equilibrium: chain.equilibrium,
-                arms: chain.arms,
-                elastic_nm_per_rad: *elastic_nm_per_rad,
-            };
-        }
-    }
+    make_causal(&mut system, |c| match &model.connections.get(c)?.kind {
+        ConnectionKind::Rubber(stage) => Some(MaxwellChain::fit(stage, band)),
+        _ => None,
+    });
     Some(system)
 }
 

@@ -77,9 +77,9 @@ pub fn read_recording_with(
     // with a leading BOM (a logger that adds one and fingerprints its own file).
     if let Some(check) = parse_csv_check(&toml_text, &toml_file)? {
         let of_text = verify(&check, csv_text.as_bytes(), &csv_file, &toml_file);
-        let with_bom = format!("\u{feff}{csv_text}");
-        if of_text.is_err() && verify(&check, with_bom.as_bytes(), &csv_file, &toml_file).is_err() {
-            of_text?;
+        if of_text.is_err() {
+            let with_bom = format!("\u{feff}{csv_text}");
+            verify(&check, with_bom.as_bytes(), &csv_file, &toml_file).or(of_text)?;
         }
     }
     let outcome = parse_recording_with(&csv_text, &csv_file, meta, node_names, options)?;

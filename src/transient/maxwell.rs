@@ -18,6 +18,7 @@
 
 use super::nnls::nnls;
 use crate::model::RubberStage;
+use crate::physics::{ElementLaw, System};
 use nalgebra::{DMatrix, DVector};
 use num_complex::Complex64;
 use std::f64::consts::TAU;
@@ -164,6 +165,30 @@ pub fn excited_band_hz(min_speed_rpm: f64, max_speed_rpm: f64, max_order: f64) -
     let lo = (0.25 * 0.5 * min_speed_rpm / 60.0).max(0.1);
     let hi = (1.5 * max_order * max_speed_rpm / 60.0).max(4.0 * lo);
     [lo, hi]
+}
+
+/// Turns each rubber element of `system` ([`ElementLaw::Rubber`]) into the linear law of
+/// the chain `chain_of(connection)` gives ([`ElementLaw::Causal`]; an element it gives
+/// none for stays as it is): the linear view of what the time domain integrates.
+pub fn make_causal(system: &mut System, mut chain_of: impl FnMut(usize) -> Option<MaxwellChain>) {
+    for e in &mut system.elements {
+        let ElementLaw::Rubber {
+            base_stiffness_nm_per_rad,
+            elastic_nm_per_rad,
+            ..
+        } = e.law
+        else {
+            continue;
+        };
+        if let Some(chain) = chain_of(e.connection) {
+            e.law = ElementLaw::Causal {
+                base_stiffness_nm_per_rad,
+                equilibrium: chain.equilibrium,
+                arms: chain.arms,
+                elastic_nm_per_rad,
+            };
+        }
+    }
 }
 
 #[cfg(test)]

@@ -15,12 +15,15 @@
 //! with `θ* = 0` at `t = 0` ([`super::speed::SpeedProfile::at`]), so a DOF starts at
 //! `Re Σ Θ_q` and speed `Re Σ i q Ω Θ_q`; a Maxwell arm (`u̇ = (x − u)/τ`) at
 //! `Re Σ X_q / (1 + i q Ω τ)`. Written here because no crate solves this small complex
-//! system in torsim's model terms; the solve itself is nalgebra's LU.
+//! system in torsim's model terms; the solve is the sweep's in-place LU
+//! ([`crate::response`]).
 
+use super::maxwell::make_causal;
 use super::plant::{Plant, PlantLaw};
 use crate::model::Model;
-use crate::physics::{ElementLaw, Excitation, System, matrices};
-use nalgebra::{DMatrix, DVector};
+use crate::physics::{Excitation, System, matrices};
+use crate::response::lu::LuWorkspace;
+use nalgebra::DMatrix;
 use num_complex::Complex64;
 use std::f64::consts::TAU;
 
@@ -68,20 +71,18 @@ fn periodic_state(model: &Model, plant: &Plant, speed_rpm: f64, load: f64) -> Op
     let excitation = Excitation::new(model, &system, load, &orders);
     let omega_ref = speed_rpm * TAU / 60.0;
     let mut offset = vec![0.0; plant.state_len];
-    let mut forcing = vec![Complex64::default(); n];
+    // The forcing on entry to each solve, `Θ_q` on return (solved in place, as the sweep).
+    let mut theta = vec![Complex64::default(); n];
     let mut dynamic = DMatrix::<Complex64>::zeros(n, n);
+    let mut lu = LuWorkspace::default();
     for (q, &order) in orders.iter().enumerate() {
         let omega = order * omega_ref;
-        excitation.forcing(q, speed_rpm, &mut forcing);
-        if forcing.iter().all(|f| f.norm_sqr() == 0.0) {
+        excitation.forcing(q, speed_rpm, &mut theta);
+        if theta.iter().all(|f| f.norm_sqr() == 0.0) {
             continue;
         }
         matrices::dynamic_stiffness(&system, omega, &mut dynamic);
-        let theta = dynamic
-            .clone()
-            .lu()
-            .solve(&DVector::from_column_slice(&forcing))?;
-        if !theta.iter().all(|v| v.is_finite()) {
+        if !lu.factor_solve(&mut dynamic, &mut theta) || !theta.iter().all(|v| v.is_finite()) {
             return None;
         }
         for i in 0..n {
@@ -106,27 +107,11 @@ fn periodic_state(model: &Model, plant: &Plant, speed_rpm: f64, load: f64) -> Op
 /// Maxwell chain), so that the start matches the time domain's own stiffness and loss.
 fn causal_copy(plant: &Plant) -> System {
     let mut system = plant.system.clone();
-    for e in &mut system.elements {
-        let chain = plant.elements.iter().find_map(|p| match &p.law {
-            PlantLaw::Rubber(r) if p.connection == e.connection => Some(&r.chain),
+    make_causal(&mut system, |connection| {
+        plant.elements.iter().find_map(|p| match &p.law {
+            PlantLaw::Rubber(r) if p.connection == connection => Some(r.chain.clone()),
             _ => None,
-        });
-        if let (
-            ElementLaw::Rubber {
-                base_stiffness_nm_per_rad,
-                elastic_nm_per_rad,
-                ..
-            },
-            Some(chain),
-        ) = (&e.law, chain)
-        {
-            e.law = ElementLaw::Causal {
-                base_stiffness_nm_per_rad: *base_stiffness_nm_per_rad,
-                equilibrium: chain.equilibrium,
-                arms: chain.arms.clone(),
-                elastic_nm_per_rad: *elastic_nm_per_rad,
-            };
-        }
-    }
+        })
+    });
     system
 }
