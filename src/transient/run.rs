@@ -152,8 +152,8 @@ pub fn simulate_observed(
     let mut profile = SpeedProfile::steady(from_rpm);
     let mut mass = vec![0.0; plant.n_dof];
     let mut y0 = initial_state(&plant)?;
-    // Started on the linear periodic state: settling then only removes what the time
-    // domain adds to it ([`super::periodic_start`]).
+    // A model linear about its static state starts on its linear periodic state: settling
+    // then only removes what the time domain adds to it ([`super::periodic_start`]).
     add_periodic_state(model, &plant, from_rpm, options.load, &mut y0);
     let atol = tolerances(&plant);
     let cycle_s = |rpm: f64| cycle_rad / (rpm * TAU / 60.0);
