@@ -62,7 +62,8 @@ mod tests {
     use super::*;
     use crate::model::parse_model;
 
-    const BASE: &str = r#"
+    const BASE: &str = r#"format = 1
+name = "band"
 [[inertia]]
 name = "a"
 inertia = 1.0

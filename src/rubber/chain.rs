@@ -264,22 +264,23 @@ mod tests {
     }
 
     /// A nearly causal target — constant stiffness with a small loss (ψ = 0.2, ξ = 0.032)
-    /// over one decade. Kramers–Kronig asks ~(2/π)·ξ·ln 10 ≈ 5 % stiffening across it,
-    /// and with the static stiffness held exact the arms can only add stiffness, so the
-    /// fit is 7.1 % stiff at the top of the band and 10.4 % off in loss (measured); the
-    /// bounds leave a little room.
+    /// over one decade. Kramers–Kronig asks ~(2/π)·ξ·ln 10 ≈ 5 % stiffening across it;
+    /// with `k∞` free the fit centres that on the band: k∞ = 0.941, worst errors 2.5 % in
+    /// storage and 0.36 % in loss (measured; with k∞ pinned at 1 they were 7.1 % and
+    /// 10.4 %). The bounds leave a little room.
     #[test]
     fn fits_a_nearly_causal_law() {
         let mut s = stage(None);
         s.psi = 0.2;
         let chain = MaxwellChain::fit(&s, [20.0, 200.0]);
-        assert!((chain.complex_stiffness(0.0).re - 1.0).abs() < 1e-15);
+        assert_eq!(chain.static_stiffness, 1.0);
+        assert!((chain.equilibrium - 1.0).abs() < 0.07, "{}", chain.equilibrium);
         assert!(
-            chain.stiffness_error < 0.075,
+            chain.stiffness_error < 0.03,
             "stiffness error {}",
             chain.stiffness_error
         );
-        assert!(chain.loss_error < 0.11, "loss error {}", chain.loss_error);
+        assert!(chain.loss_error < 0.01, "loss error {}", chain.loss_error);
         assert!(chain.arms.iter().all(|(k, t)| *k > 0.0 && *t > 0.0));
     }
 
@@ -300,7 +301,7 @@ mod tests {
         let eta = (0.12 * std::f64::consts::FRAC_PI_2).tan();
         // Held on the plateau below the band.
         let plateau = law.storage(2.0 / 1.5 / PLATEAU_BELOW_ARMS);
-        assert!((chain.equilibrium - plateau).abs() < 1e-15);
+        assert!((chain.static_stiffness - plateau).abs() < 1e-15);
         // Measured: 2.0 % in storage, 17 % in loss (at the band's lower end, where the
         // arms below it are missing).
         assert!(chain.stiffness_error < 0.025, "{}", chain.stiffness_error);
@@ -335,7 +336,8 @@ mod tests {
             range: Some([0.0, 300.0]),
         };
         let chain = MaxwellChain::fit(&stage(Some(poly)), [10.0, 400.0]);
-        assert!((chain.complex_stiffness(0.0).re - 1.0).abs() < 1e-15);
+        // Measured: k∞ = 1.36, worst errors 34 % (storage) and 21 % (loss).
+        assert_eq!(chain.static_stiffness, 1.0);
         assert!(
             chain.stiffness_error > 0.1 && chain.stiffness_error < 0.45,
             "{}",
@@ -352,5 +354,38 @@ mod tests {
             .map(|&f| chain.complex_stiffness(f).re)
             .collect();
         assert!(re.windows(2).all(|w| w[1] > w[0]), "{re:?}");
+    }
+
+    /// Two modes a decade and a half apart (15 and 226 Hz, the spec's three-DOF example),
+    /// each with half the stage's energy, on a flat law with ψ = 0.9: Kramers–Kronig asks
+    /// ≈ 25 % stiffening between them to keep the loss at both, so the fit shares the
+    /// difference (measured: −1.2 % / +0.9 % at 15 Hz, +4.9 % / −5.5 % at 226 Hz in storage
+    /// and loss factor). A mode alone is met closely (measured −0.015 % and +0.002 %).
+    #[test]
+    fn meets_the_law_at_its_modes() {
+        let mut s = stage(None);
+        s.psi = 0.9;
+        let xi = 0.9 / TAU;
+        let one = [ModeTarget {
+            frequency_hz: 15.0,
+            energy_share: 1.0,
+        }];
+        let chain = MaxwellChain::fit_at_modes(&s, [1.25, 750.0], &one);
+        let k = chain.complex_stiffness(15.0);
+        assert!((k.re - 1.0).abs() < 1e-3, "{k}");
+        assert!((k.im / k.re / xi - 1.0).abs() < 1e-2, "{k}");
+        let two = [
+            one[0],
+            ModeTarget {
+                frequency_hz: 226.0,
+                energy_share: 0.5,
+            },
+        ];
+        let chain = MaxwellChain::fit_at_modes(&s, [1.25, 750.0], &two);
+        for f in [15.0, 226.0] {
+            let k = chain.complex_stiffness(f);
+            assert!((k.re - 1.0).abs() < 0.06, "{f} Hz: {k}");
+            assert!((k.im / k.re / xi - 1.0).abs() < 0.08, "{f} Hz: {k}");
+        }
     }
 }
