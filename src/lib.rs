@@ -26,8 +26,11 @@
 //! - [`signal`] — order analysis of a recording: resampling to the reference shaft's
 //!   angle (band-limited), synchronous averaging per working cycle, order spectrum, RMS,
 //!   irregularity ratio, relative speed between stations, STFT of run-ups.
+//! - [`rubber`] — the one causal representation of each rubber stage (a Maxwell chain
+//!   fitted to seed 000's law at the model's modes and over its band) that every analysis
+//!   reads.
 //! - [`transient`] — the nonlinear time domain: crank-angle-dependent engine inertia,
-//!   secant rubber stiffness with a causal Maxwell chain and self-heating, gear backlash;
+//!   secant rubber stiffness with its causal Maxwell chain and self-heating, gear backlash;
 //!   Dormand–Prince integration; steady runs settled cycle by cycle, and run-ups.
 //! - [`compare`] — design variants regime by regime: IR per station, power loss per
 //!   rubber stage (seed 001 Tables 9–13).
@@ -74,6 +77,7 @@ pub mod model;
 pub mod physics;
 pub mod recording;
 pub mod response;
+pub mod rubber;
 pub mod signal;
 pub mod synth;
 pub mod transient;

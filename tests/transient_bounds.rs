@@ -185,7 +185,7 @@ fn states_are_named_by_node_and_rubber_stage() {
             ambient_c: 25.0,
         });
     }
-    let plant = Plant::new(&model, 1.0, [1000.0, 3000.0], None).expect("plant");
+    let plant = Plant::new(&model, 1.0, None).expect("plant");
     let n = plant.n_dof;
     assert!(state_name(&plant, n).starts_with("the vibration speed of node `engine"));
     assert!(state_name(&plant, 2 * n).starts_with("Maxwell arm 1 of rubber stage `b`"));

@@ -7,7 +7,6 @@ use torsim::physics::{Excitation, OperatingPoint, System};
 use torsim::recording::Run;
 use torsim::response::forced_response;
 use torsim::transient::dopri::Dopri5;
-use torsim::transient::maxwell::{MaxwellChain, excited_band_hz};
 use torsim::transient::plant::Plant;
 use torsim::transient::{Method, RunOptions, SpeedProfile, simulate};
 
@@ -144,7 +143,7 @@ fn undamped_free_vibration_conserves_energy() {
         .unwrap()
         .to_string();
     let model = parse_model(&text, "undamped.toml").unwrap();
-    let plant = Plant::new(&model, 1.0, [1000.0, 1000.0], None).unwrap();
+    let plant = Plant::new(&model, 1.0, None).unwrap();
     let profile = SpeedProfile::steady(1000.0);
     let mut mass = vec![0.0; 3];
     let mut rhs =
@@ -203,12 +202,15 @@ fn rubber_1dof(viscous_above_hz: Option<f64>) -> (f64, f64, [usize; 2]) {
         ..RunOptions::default()
     };
     let sim = simulate(&model, Run::steady(speed_rpm, 2.0), options, &mut |_| true).unwrap();
-    let ConnectionKind::Rubber(stage) = &model.connections[0].kind else {
-        panic!("not a rubber stage");
-    };
-    let full = MaxwellChain::fit(stage, excited_band_hz(speed_rpm, speed_rpm, 24.0));
+    assert!(matches!(model.connections[0].kind, ConnectionKind::Rubber(_)));
+    // The run's chain is the model's own (one law in every view), less any fast arms.
+    let system = System::new(&model, OperatingPoint::default()).unwrap();
+    let full = system.chains[0].clone().unwrap();
     let viscous_s = viscous_above_hz.map_or(0.0, |f| full.clone().take_fast_arms(f));
     let chain = &sim.chains[0].1;
+    if viscous_above_hz.is_none() {
+        assert_eq!(*chain, full);
+    }
     let omega = speed_rpm * TAU / 60.0;
     let k = 1.0e4 * (chain.complex_stiffness(omega / TAU) + Complex64::new(0.0, omega * viscous_s));
     let theta = 20.0 / (k - Complex64::new(omega * omega * 0.1, 0.0)).norm();
@@ -304,4 +306,62 @@ fn a_lightly_damped_mode_is_not_rung_by_the_start() {
         "time {time} vs frequency {freq} ({:.3} %)",
         100.0 * err
     );
+}
+
+/// The spec's three-DOF example (`tests/data/spec-examples/three-dof.toml`: two rubber
+/// stages, ψ = 0.9, no amplitude law: a linear model) swept through its first mode: the
+/// time domain's steady order-1 IAS at the engine agrees with `response` within 1 % at
+/// every speed, the resonance included (issue 15: one rubber law in every view; it was
+/// +93 % at mode 1 when the time domain fitted its own chain per run). The harmonic is cut
+/// from 100 to 5 N·m: at 100 N·m the resonant swing (0.17 rad) modulates the crank angle
+/// the time domain drives at and moves 1.6 % of order 1 into order 2, a real nonlinearity
+/// of the time domain that the linear response leaves out. Measured worst: printed.
+#[test]
+fn rubber_model_matches_the_frequency_domain_through_its_resonance() {
+    let text = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/data/spec-examples/three-dof.toml"
+    ))
+    .unwrap()
+    .replace("amplitude = 100.0", "amplitude = 5.0");
+    let model = parse_model(&text, "three-dof.toml").unwrap();
+    assert!(
+        model.harmonics.iter().all(|h| matches!(
+            h.amplitude,
+            torsim::model::HarmonicAmplitude::Constant(a) if a <= 5.0
+        )),
+        "the harmonic was cut"
+    );
+    let system = System::new(&model, OperatingPoint::default()).unwrap();
+    let mode_1_hz = torsim::modal::modes(&system).unwrap()[0].frequency_hz;
+    let resonance_rpm = 60.0 * mode_1_hz;
+    let speeds: Vec<f64> = [0.6, 0.85, 0.95, 1.0, 1.05, 1.15, 1.5]
+        .iter()
+        .map(|x| (x * resonance_rpm / 10.0).round() * 10.0)
+        .collect();
+    let excitation = Excitation::new(&model, &system, 1.0, &[1.0]);
+    let r = forced_response(&system, &excitation, &speeds).unwrap();
+    let mut worst: f64 = 0.0;
+    for (i, &speed_rpm) in speeds.iter().enumerate() {
+        // A rate that makes one two-revolution cycle a whole number of samples.
+        let cycle_s = 120.0 / speed_rpm;
+        let rate_hz = (4096.0 * cycle_s).round() / cycle_s;
+        let options = RunOptions {
+            rate_hz,
+            max_settle_s: 20.0,
+            ..RunOptions::default()
+        };
+        let sim = simulate(&model, Run::steady(speed_rpm, 1.0), options, &mut |_| true).unwrap();
+        assert!(sim.settling.converged, "{speed_rpm} rpm: {:?}", sim.settling);
+        let time = order_amplitude(&sim.speed_rpm[0], rate_hz, speed_rpm, 1.0);
+        let freq = r.ias_amplitude_rpm[0][0][i];
+        let err = (time - freq).abs() / freq;
+        worst = worst.max(err);
+        assert!(
+            err < 0.01,
+            "{speed_rpm} rpm: time {time} vs frequency {freq} rpm ({:.3} %)",
+            100.0 * err
+        );
+    }
+    eprintln!("worst {:.4} %", 100.0 * worst);
 }

@@ -151,8 +151,14 @@ impl Driveline {
 
     /// Undamped modes (the rigid-body mode dropped).
     pub fn modes(&self) -> Modes {
+        self.modes_scaled(|_| 1.0)
+    }
+
+    /// Undamped modes with connection `i`'s stiffness times `scale(i)` (the rigid-body
+    /// mode dropped).
+    pub fn modes_scaled(&self, scale: impl Fn(usize) -> f64) -> Modes {
         let m = self.mass_diag();
-        let k = self.stiffness_matrix(|_| 1.0);
+        let k = self.stiffness_matrix(scale);
         let n = m.len();
         let a = DMatrix::from_fn(n, n, |i, j| k[(i, j)] / (m[i] * m[j]).sqrt());
         let eig = SymmetricEigen::new(a);

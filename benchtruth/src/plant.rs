@@ -8,8 +8,9 @@ use crate::effects::{
     AmplitudeLaw, BacklashLaw, CylinderLaw, Effect, FrequencyLaw, HystereticLaw, Thermal,
 };
 use crate::engine::{EngineLaw, Kinematics};
+use crate::fitpoints;
 use crate::integrate::System;
-use crate::visco::Bank;
+use crate::visco::{Anchor, Bank};
 use std::f64::consts::TAU;
 
 /// Bandwidth of the dyno's speed loop, Hz (a bench dyno holds the mean speed slowly).
@@ -35,6 +36,8 @@ enum Link {
         amp: Option<AmplitudeLaw>,
         thermal: Option<(Thermal, usize)>,
         off: usize,
+        /// Static twist under the mean torque, rad: the bank's vibration is about it.
+        phi_s: f64,
     },
     Dahl {
         k: f64,
@@ -109,7 +112,7 @@ pub struct Plant {
     pub speed_ratio: Vec<f64>,
 }
 
-/// Band over which rubber laws are fitted, Hz.
+/// The model's band over which rubber laws are fitted, Hz (`fitpoints.rs`).
 #[derive(Debug, Clone, Copy)]
 pub struct Band {
     pub lo_hz: f64,
@@ -117,12 +120,52 @@ pub struct Band {
 }
 
 impl Plant {
-    /// Builds the truth of `d` with `effect` at engine `load`, following `profile`.
+    /// Builds the truth of `d` with `effect` at engine `load`, following `profile`; its
+    /// rubber banks fitted over the model's `band` and at the modes of `d` at this load.
     pub fn new(d: &Driveline, effect: &Effect, load: f64, profile: Profile, band: Band) -> Self {
         let n = d.nodes.len();
         let mut off = 2 * n;
         let mut conns = Vec::new();
         let mut fastest: f64 = 0.0;
+        let kin = match effect {
+            Effect::CrankVariableInertia { exact: true } => Kinematics::Exact,
+            _ => Kinematics::FirstOrder,
+        };
+        let mut engine = EngineLaw::new(&d.engine, load, kin);
+        if let Effect::CylinderImbalance { cylinder, law } = effect {
+            let healthy = engine.pressure_pa[*cylinder].clone();
+            engine.pressure_pa[*cylinder] = unequal_cylinder(&healthy, law);
+        }
+        let t_mean = engine.mean_torque();
+        let amp_of = |i: usize| match effect {
+            Effect::AmplitudeNonlinearity { conn, law } if *conn == i => Some(*law),
+            _ => None,
+        };
+        let freq_of = |i: usize| match effect {
+            Effect::FrequencyDependence { conn, law } if *conn == i => Some(*law),
+            _ => None,
+        };
+        // Each rubber stage's static twist and tangent factor d(g·x)/dx there.
+        let torques = fitpoints::static_torques(d, t_mean);
+        let statics: Vec<(f64, f64)> = d
+            .connections
+            .iter()
+            .enumerate()
+            .map(|(i, c)| match c.kind {
+                Kind::Rubber { stiffness, .. } => static_point(stiffness, amp_of(i), torques[i]),
+                _ => (0.0, 1.0),
+            })
+            .collect();
+        // The nominal system's stiffness factors: rubber stages at their tangent at the
+        // static twist times their frequency factor at the mode's own frequency.
+        let factor = |i: usize, f: f64| match d.connections[i].kind {
+            Kind::Rubber { psi, .. } => {
+                statics[i].1
+                    * freq_of(i).map_or(1.0, |law| frequency_target(&law, 1.0, psi / TAU, f).0)
+            }
+            _ => 1.0,
+        };
+        let modes = fitpoints::modes_with_shares(d, &factor);
         for (i, c) in d.connections.iter().enumerate() {
             let link = match c.kind {
                 Kind::Shaft { stiffness, damping } => Link::Linear {
@@ -169,29 +212,28 @@ impl Plant {
                             l
                         }
                         _ => {
-                            let bank = match effect {
-                                Effect::FrequencyDependence { conn, law } if *conn == i => {
-                                    Bank::fit(
-                                        |f| frequency_target(law, stiffness, xi, f),
-                                        None,
-                                        band.lo_hz,
-                                        band.hi_hz,
-                                    )
-                                }
-                                _ => Bank::fit(
-                                    |_| (stiffness, stiffness * xi),
-                                    Some(stiffness),
+                            let at = fitpoints::for_connection(&modes, i);
+                            let bank = match freq_of(i) {
+                                Some(law) => Bank::fit(
+                                    |f| frequency_target(&law, stiffness, xi, f),
+                                    match law {
+                                        FrequencyLaw::PowerLaw { .. } => Anchor::BelowArms,
+                                        FrequencyLaw::FractionalZener { .. } => Anchor::Rest,
+                                    },
                                     band.lo_hz,
                                     band.hi_hz,
+                                    &at,
+                                ),
+                                None => Bank::fit(
+                                    |_| (stiffness, stiffness * xi),
+                                    Anchor::Rest,
+                                    band.lo_hz,
+                                    band.hi_hz,
+                                    &at,
                                 ),
                             };
                             fastest = bank.rate.iter().fold(fastest, |a, &b| a.max(b));
-                            let amp = match effect {
-                                Effect::AmplitudeNonlinearity { conn, law } if *conn == i => {
-                                    Some(*law)
-                                }
-                                _ => None,
-                            };
+                            let amp = amp_of(i);
                             let nb = bank.k.len();
                             let thermal = match effect {
                                 Effect::ThermalDrift { conn, law } if *conn == i => {
@@ -204,6 +246,7 @@ impl Plant {
                                 amp,
                                 thermal,
                                 off,
+                                phi_s: statics[i].0,
                             };
                             off += nb + thermal.is_some() as usize;
                             l
@@ -212,15 +255,6 @@ impl Plant {
                 }
             };
             conns.push((c.from, c.to, c.lever(), link));
-        }
-        let kin = match effect {
-            Effect::CrankVariableInertia { exact: true } => Kinematics::Exact,
-            _ => Kinematics::FirstOrder,
-        };
-        let mut engine = EngineLaw::new(&d.engine, load, kin);
-        if let Effect::CylinderImbalance { cylinder, law } = effect {
-            let healthy = engine.pressure_pa[*cylinder].clone();
-            engine.pressure_pa[*cylinder] = unequal_cylinder(&healthy, law);
         }
         let speed_ratio = d.speed_ratios();
         let j_ref: f64 = (0..n)
@@ -236,7 +270,6 @@ impl Plant {
         // under 0.4 % of the load's inertia force J_load·ω² at 10 Hz. Closed loop (J_load
         // alone): s³ + 6.3 s² + 12.6 s + 9.9, poles −3.4 and −1.4 ± 1.0i (settles in ~3 s).
         let wn = TAU * CONTROL_BANDWIDTH_HZ;
-        let t_mean = engine.mean_torque();
         Plant {
             n,
             inertia: d.nodes.iter().map(|x| x.inertia_kg_m2).collect(),
@@ -262,12 +295,21 @@ impl Plant {
     }
 
     /// Rotor state at t = 0: every node at its share of the reference speed, twisted by
-    /// the mean torque only through the controller (the settling time takes the rest).
+    /// the mean torque only through the controller (the settling time takes the rest);
+    /// the rubber branches relaxed at their stage's static twist.
     pub fn initial_state(&self) -> Vec<f64> {
         let mut y = vec![0.0; self.len];
         let (w, _) = self.profile.at(0.0);
         for i in 0..self.n {
             y[self.n + i] = w * self.speed_ratio[i];
+        }
+        for (_, _, _, link) in &self.conns {
+            if let Link::Visco {
+                bank, off, phi_s, ..
+            } = link
+            {
+                y[*off..*off + bank.k.len()].fill(*phi_s);
+            }
         }
         y
     }
@@ -295,6 +337,28 @@ impl Plant {
         }
         p
     }
+}
+
+/// A rubber stage's static twist under the mean torque `torque` (N·m) on the static curve
+/// `k·g(x)·x`, and its tangent factor `d(g·x)/dx` there: (rad, 1).
+fn static_point(k: f64, amp: Option<AmplitudeLaw>, torque: f64) -> (f64, f64) {
+    let Some(law) = amp else {
+        return (torque / k, 1.0);
+    };
+    let curve = |x: f64| law.factor(x) * x;
+    // g ≥ 1: the twist lies between 0 and the linear one; bisection on the monotone curve.
+    let (mut a, mut b) = (0.0f64, torque / k);
+    for _ in 0..200 {
+        let m = 0.5 * (a + b);
+        if (curve(m) - torque / k) * (curve(a) - torque / k) <= 0.0 {
+            b = m;
+        } else {
+            a = m;
+        }
+    }
+    let x = 0.5 * (a + b);
+    let h = 1e-6 * x.abs().max(1e-4);
+    (x, (curve(x + h) - curve(x - h)) / (2.0 * h))
 }
 
 /// The target complex stiffness of a frequency-dependent rubber at `f` Hz.
@@ -384,10 +448,14 @@ impl System for Plant {
                     amp,
                     thermal,
                     off,
+                    phi_s,
                 } => {
                     let s = thermal.map_or(1.0, |(th, i)| th.softening.factor(y[i]));
                     let g0 = amp.map_or(1.0, |a| a.factor(d));
-                    let mut tq = bank.k0 * g0 * d;
+                    // The static curve holds the twist; the bank's equilibrium spring
+                    // acts on the vibration about the static twist.
+                    let mut tq =
+                        bank.k_static * g0 * d + (bank.k_inf - bank.k_static) * (d - phi_s);
                     let mut loss = 0.0;
                     for (j, (k, l)) in bank.k.iter().zip(&bank.rate).enumerate() {
                         let u = y[off + j];

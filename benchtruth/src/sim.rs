@@ -66,24 +66,12 @@ pub fn run(truth: &Driveline, plant: &Plant, rate_hz: f64, mut each: impl FnMut(
     }
 }
 
-/// Highest engine order the rubber fit covers (model-format.md `[operation] orders`:
-/// by default every half order up to 12; twice that covers the recording's content).
-const FIT_MAX_ORDER: f64 = 24.0;
-
-/// The band over which one recording's rubber laws are fitted, Hz: model-format.md
-/// (`kind = "rubber"`) asks for the causal representation "fitted to reproduce [the law]
-/// where the model's modes and excited orders lie"; here from a quarter of order 0.5 at
-/// the recording's lowest speed to 1.5 × order 24 at its highest, the band torsim
-/// documents for its own fit, so that for the `none` control the bench integrates the
-/// model file's law as any analysis of the model file represents it.
-pub fn band(rec: &crate::campaign::Recording) -> Band {
-    let lo_rpm = rec.from_rpm.min(rec.to_rpm);
-    let hi_rpm = rec.from_rpm.max(rec.to_rpm);
-    let lo_hz = (0.25 * 0.5 * lo_rpm / 60.0).max(0.1);
-    Band {
-        lo_hz,
-        hi_hz: (1.5 * FIT_MAX_ORDER * hi_rpm / 60.0).max(4.0 * lo_hz),
-    }
+/// The band over which the rubber laws of `case` are fitted, Hz: the model file's, the
+/// same for every recording (`fitpoints.rs`), so that for the `none` control the bench
+/// integrates the model file's law as every analysis of the model file represents it.
+pub fn band(case: &Case) -> Band {
+    let (lo, hi) = crate::fitpoints::speed_range_rpm(&case.campaign);
+    crate::fitpoints::model_band(lo, hi)
 }
 
 /// The plant of one recording of `case`.
@@ -99,5 +87,5 @@ pub fn plant_for(case: &Case, rec: &crate::campaign::Recording) -> Plant {
         wobble_period_s: case.campaign.wobble_period_s,
         wobble_phase: (rec.from_rpm * 0.37).rem_euclid(TAU),
     };
-    Plant::new(&case.truth, &case.effect, rec.load, profile, band(rec))
+    Plant::new(&case.truth, &case.effect, rec.load, profile, band(case))
 }

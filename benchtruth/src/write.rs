@@ -266,18 +266,8 @@ pub fn write_case(seed: u64, class: Option<&str>, dir: &Path) -> Result<CaseFile
         path: dir.to_path_buf(),
         source,
     })?;
-    let lo = case
-        .campaign
-        .recordings
-        .iter()
-        .map(|r| r.from_rpm.min(r.to_rpm))
-        .fold(f64::INFINITY, f64::min);
-    let hi = case
-        .campaign
-        .recordings
-        .iter()
-        .map(|r| r.from_rpm.max(r.to_rpm))
-        .fold(0.0, f64::max);
+    // The range the bench's rubber fits take their band from (`sim::band`).
+    let (lo, hi) = crate::fitpoints::speed_range_rpm(&case.campaign);
     let model = dir.join("model.toml");
     put(&model, &model_toml(&case.user, lo, hi))?;
     let results: Vec<Result<PathBuf, WriteError>> = std::thread::scope(|s| {

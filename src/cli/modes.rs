@@ -6,7 +6,7 @@ use super::format::{emit, number, outln, print_json, print_warnings, table};
 use super::input::{check_load, load_model};
 use super::values;
 use serde_json::{Map, Value, json};
-use torsim::modal::{DampedMode, damped_modes, modes};
+use torsim::modal::{DampedMode, LawDeviation, damped_modes, law_deviations, modes};
 use torsim::physics::{OperatingPoint, System};
 
 /// Runs the command.
@@ -24,7 +24,9 @@ pub fn run(model_arg: &str, speed_rpm: Option<f64>, load: f64, json: bool) -> Re
     let modes = modes(&system)?;
     let damped = damped_modes(&system, &modes);
     let frequencies: Vec<f64> = modes.iter().map(|m| m.frequency_hz).collect();
-    print_warnings(&system.frequency_range_warnings(&frequencies));
+    let nominal = System::nominal(&model, point)?;
+    print_warnings(&nominal.frequency_range_warnings(&frequencies));
+    let deviations = law_deviations(&system, &nominal, &modes);
     if json {
         let mut list = Vec::new();
         for (i, (m, d)) in modes.iter().zip(&damped).enumerate() {
@@ -42,6 +44,9 @@ pub fn run(model_arg: &str, speed_rpm: Option<f64>, load: f64, json: bool) -> Re
             "rigid_body_modes": system.rigid_body_modes,
             "modes": list,
         });
+        if !deviations.is_empty() {
+            doc["rubber_law"] = law_json(&deviations)?;
+        }
         // Echoed only when given: no null in the output (issue 13).
         if let Some(n) = speed_rpm {
             doc["speed_rpm"] = number(n, "speed")?;
@@ -82,7 +87,66 @@ pub fn run(model_arg: &str, speed_rpm: Option<f64>, load: f64, json: bool) -> Re
     if damped.iter().any(|d| !damped_known(d)) {
         outln!(text, "—: {NOT_DAMPED}");
     }
+    if !deviations.is_empty() {
+        text += &law_text(&deviations);
+    }
     emit(&text)
+}
+
+/// The rubber-law table: each stage's causal chain against seed 000's nominal law at
+/// each mode (`spec/model-format.md`, `kind = "rubber"`).
+fn law_text(deviations: &[LawDeviation]) -> String {
+    let mut text = String::new();
+    outln!(
+        text,
+        "\nrubber law: each stage's causal chain (used by every analysis) against seed 000's \
+         nominal law k·α_f(f)·(1 + iξ_T) (not causal), at each mode"
+    );
+    let header: Vec<String> = [
+        "stage",
+        "mode",
+        "f [Hz]",
+        "energy share [%]",
+        "stiffness Δ [%]",
+        "loss factor Δ [%]",
+    ]
+    .map(String::from)
+    .to_vec();
+    let rows: Vec<Vec<String>> = deviations
+        .iter()
+        .map(|d| {
+            vec![
+                d.connection.clone(),
+                d.mode.to_string(),
+                format!("{:.3}", d.frequency_hz),
+                format!("{:.1}", 100.0 * d.energy_share + 0.0),
+                format!("{:+.2}", 100.0 * d.stiffness_deviation + 0.0),
+                format!("{:+.2}", 100.0 * d.loss_deviation + 0.0),
+            ]
+        })
+        .collect();
+    text += &table(&header, &rows);
+    text
+}
+
+/// The rubber-law deviations as JSON: one entry per stage and mode.
+fn law_json(deviations: &[LawDeviation]) -> Result<Value, CliError> {
+    let mut list = Vec::new();
+    for d in deviations {
+        list.push(json!({
+            "connection": d.connection,
+            "mode": d.mode,
+            "frequency_hz": number(d.frequency_hz, "natural frequency")?,
+            "energy_share": number(d.energy_share, "energy share")?,
+            "stiffness_deviation": number(d.stiffness_deviation, "stiffness deviation")?,
+            "loss_factor_deviation": number(d.loss_deviation, "loss factor deviation")?,
+        }));
+    }
+    Ok(json!({
+        "representation": "causal Maxwell chain, fitted at the modes and over the model's band",
+        "compared_with": "seed 000 nominal law k·α_f(f)·(1 + iξ_T), not causal",
+        "deviations": list,
+    }))
 }
 
 /// One mode's JSON: a damped frequency not found is said (`not_computed`), never null.

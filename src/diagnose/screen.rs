@@ -120,7 +120,7 @@ fn torque_reversal_runs(cx: &Context, e: &Evaluated, name: &str) -> Vec<bool> {
             let speeds: Vec<f64> = (0..=steps)
                 .map(|i| lo + (hi - lo) * i as f64 / steps.max(1) as f64)
                 .collect();
-            let Some(system) = causal_system(&e.model, run.load, [lo, hi]) else {
+            let Some(system) = causal_system(&e.model, run.load) else {
                 return false;
             };
             let mean = system.mean_torque_nm[k].unwrap_or(0.0).abs();

@@ -9,7 +9,7 @@
 //! `mean_c A(n_c) / A(n̄)`.
 
 use super::observe::{Observed, RunShape};
-use super::surrogate::{causal_system, run_speeds};
+use super::surrogate::causal_system;
 use crate::model::Model;
 use crate::physics::{Excitation, System};
 use crate::response::forced_response_orders;
@@ -39,7 +39,7 @@ pub fn spread_factors(model: &Model, observed: &Observed) -> Vec<f64> {
         if matches!(run.regime, RunShape::Ramp { .. }) {
             continue;
         }
-        let Some(system) = causal_system(model, run.load, run_speeds(observed, r)) else {
+        let Some(system) = causal_system(model, run.load) else {
             continue;
         };
         let orders = run_orders(observed, r);

@@ -13,10 +13,9 @@ use super::observe::{Observed, RunShape};
 use super::sensor::{self, TapeJoint};
 use super::spread::{run_factors, run_orders};
 use crate::effects::param_error::{parameter_names, scale_parameter};
-use crate::model::{ConnectionKind, Model};
+use crate::model::Model;
 use crate::physics::{Excitation, OperatingPoint, System};
 use crate::response::forced_response_orders;
-use crate::transient::maxwell::{MaxwellChain, excited_band_hz, make_causal};
 
 /// A plain parameter: its full name (`connection.shaft.stiffness`) and the node or
 /// connection it belongs to.
@@ -54,7 +53,7 @@ pub fn scaled(model: &Model, plain: &[Plain], factors: &[f64]) -> Result<Model, 
     Ok(m)
 }
 
-/// The speeds a run's time-domain rubber chain is fitted for, rpm: `[lo, hi]`.
+/// The speeds a run covers, rpm: `[lo, hi]`.
 pub fn run_speeds(observed: &Observed, run: usize) -> [f64; 2] {
     match observed.runs[run].regime {
         RunShape::Steady { speed_rpm } | RunShape::LongRun { speed_rpm } => [speed_rpm, speed_rpm],
@@ -62,21 +61,14 @@ pub fn run_speeds(observed: &Observed, run: usize) -> [f64; 2] {
     }
 }
 
-/// The linear system of `model` at `load` with every rubber stage as the time domain
-/// represents it at speeds `[lo, hi]`: the Maxwell chain fitted over the band those
-/// speeds excite ([`ElementLaw::Causal`]).
-pub fn causal_system(model: &Model, load: f64, [lo, hi]: [f64; 2]) -> Option<System> {
+/// The linear system of `model` at `load`: every rubber stage as the time domain
+/// represents it, its one causal chain ([`System::new`], [`crate::rubber`]).
+pub fn causal_system(model: &Model, load: f64) -> Option<System> {
     let point = OperatingPoint {
         load,
         temperature_c: None,
     };
-    let mut system = System::new(model, point).ok()?;
-    let band = excited_band_hz(lo, hi, 24.0);
-    make_causal(&mut system, |c| match &model.connections.get(c)?.kind {
-        ConnectionKind::Rubber(stage) => Some(MaxwellChain::fit(stage, band)),
-        _ => None,
-    });
-    Some(system)
+    System::new(model, point).ok()
 }
 
 /// The user's value of the plain parameter `name` (full name), if it exists.
@@ -110,7 +102,7 @@ pub fn linear_predict(
     // excitation of each run, built once here for both.
     let mut factors = vec![1.0; observed.observations.len()];
     for (r, run) in observed.runs.iter().enumerate() {
-        let system = causal_system(model, run.load, run_speeds(observed, r))?;
+        let system = causal_system(model, run.load)?;
         let mine: Vec<usize> = (0..out.len())
             .filter(|i| observed.observations[*i].run == r)
             .collect();

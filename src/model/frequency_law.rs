@@ -139,13 +139,13 @@ mod tests {
         );
         let again = parse_model(&to_toml_string(&model), "again.toml").unwrap();
         assert_eq!(again, model);
-        // The linear model sees the storage and the law's loss (ψ = 1 is ξ = 0.159, below
-        // tan(0.12·π/2) = 0.191).
+        // The nominal linear model sees the storage and the law's loss (ψ = 1 is ξ = 0.159,
+        // below tan(0.12·π/2) = 0.191).
         let point = OperatingPoint {
             load: 0.0,
             temperature_c: None,
         };
-        let system = System::new(&model, point).unwrap();
+        let system = System::nominal(&model, point).unwrap();
         let e = system
             .elements
             .iter()

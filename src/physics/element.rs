@@ -30,18 +30,21 @@ pub enum ElementLaw {
         /// `c_Tstat·(dα_x x/dx − 1)·α_f(0)·α_Tc·r²` (then the base has no α_x); 0 else.
         elastic_nm_per_rad: f64,
     },
-    /// A rubber stage as the time domain represents it: the same base stiffness times
-    /// the complex stiffness of a causal generalized Maxwell chain
-    /// (`k∞ + Σ k_j·iωτ_j/(1 + iωτ_j)`, relative; [`crate::transient::maxwell`]), so
-    /// that a linear model can stand in for the time domain (the diagnosis' surrogate).
+    /// A rubber stage as every analysis represents it ([`crate::rubber`]): a base
+    /// stiffness times the complex stiffness of its causal generalized Maxwell chain
+    /// (`k∞ + Σ k_j·iωτ_j/(1 + iωτ_j)`, relative), plus a lossless spring; the time
+    /// domain's rubber torque linearized at the static twist ([`causal_law`]).
     Causal {
-        /// As for [`ElementLaw::Rubber`], N·m/rad.
+        /// Referred stiffness the chain multiplies, N·m/rad: `c_Tstat·h'·α_Tc·r²` with
+        /// `h' = d(α_x x)/dx` the tangent (`c_Tstat·α_Tc·r²` for an `elastic` stage).
         base_stiffness_nm_per_rad: f64,
         /// `k∞`, relative.
         equilibrium: f64,
-        /// Arms `(k_j, τ_j)`: relative stiffness and relaxation time, s.
+        /// Arms `(k_j·α_Tξ(T)/α_Tξ(T0), τ_j)`: relative stiffness and relaxation time, s.
         arms: Vec<(f64, f64)>,
-        /// As for [`ElementLaw::Rubber`], N·m/rad.
+        /// Referred stiffness added without loss or frequency dependence, N·m/rad: the
+        /// stiffening of an `elastic` stage's static curve, `c_Tstat·(h' − 1)·κ0·α_Tc·r²`
+        /// ([`causal_law`]); 0 else.
         elastic_nm_per_rad: f64,
     },
 }
@@ -209,6 +212,46 @@ pub(super) fn rubber_law(
         },
         twist,
     ))
+}
+
+/// The causal law of `stage` represented by `chain` ([`crate::rubber`]), linearized at
+/// the static twist `twist_rad` (own shaft) and `temperature_c`; `r2` refers it to the
+/// reference shaft.
+///
+/// The time domain's torque ([`crate::transient::forces`]) is
+/// `c·α_Tc·[κ0·α_x(x)·φ + h'(φ)·D]`, `D` the chain's part above `κ0` about the static
+/// twist and `h' = d(α_x x)/dx` (seed 000 eq. 1–2). At `φ = φ_s` with the arms relaxed
+/// its derivative is `c·α_Tc·h'·(k∞ + a·arms)` (`a = α_Tξ(T)/α_Tξ(T0)`, 1 at the stage's
+/// own temperature): the tangent times the chain, as the
+/// nominal law's `c·α_Tc·h'·α_f(f)·(1 + iξ_T)`. An `elastic` stage puts α_x on the static
+/// curve only: `c·α_Tc·(k∞ + a·arms) + c·α_Tc·(h' − 1)·κ0`.
+pub(super) fn causal_law(
+    stage: &RubberStage,
+    chain: &crate::rubber::MaxwellChain,
+    temperature_c: f64,
+    twist_rad: f64,
+    r2: f64,
+) -> ElementLaw {
+    let state = stage.state(None, temperature_c, twist_rad);
+    let c = stage.static_stiffness_nm_per_rad() * state.alpha_tc * r2;
+    let tangent = state.alpha_x_tangent;
+    // The chain meets the loss at the stage's own temperature; its arms scale by
+    // α_Tξ(T)/α_Tξ(T0) elsewhere ([`crate::rubber::chain`]).
+    let damping = state.alpha_txi / stage.state(None, stage.temperature_c, 0.0).alpha_txi;
+    let (base, elastic) = match stage.amplitude_form {
+        AmplitudeForm::Whole => (c * tangent, 0.0),
+        AmplitudeForm::Elastic => (c, c * (tangent - 1.0) * chain.static_stiffness),
+    };
+    ElementLaw::Causal {
+        base_stiffness_nm_per_rad: base,
+        equilibrium: chain.equilibrium,
+        arms: chain
+            .arms
+            .iter()
+            .map(|&(k, tau)| (k * damping, tau))
+            .collect(),
+        elastic_nm_per_rad: elastic,
+    }
 }
 
 #[cfg(test)]

@@ -1,5 +1,6 @@
-//! The linear driveline at an operating point: assembly of M, K(f) (complex, hysteretic
-//! rubber), C, referred to the engine shaft through the gear tree ([`system`]); the static
+//! The linear driveline at an operating point: assembly of M, K(f) (complex; rubber as one
+//! causal chain, [`one_law`]), C, referred to the engine shaft through the gear tree
+//! ([`system`]); the static
 //! twist of the rubber stages under the mean torque ([`static_twist`]); the engine torque
 //! of seed 001 eq. 3–5 and its harmonics per order ([`engine`], [`excitation`]).
 
@@ -8,6 +9,7 @@ pub mod engine;
 pub mod error;
 pub mod excitation;
 pub mod matrices;
+mod one_law;
 pub mod static_twist;
 pub mod system;
 mod topology;

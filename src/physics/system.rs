@@ -13,6 +13,7 @@ use super::excitation::{CylinderSpectrum, cylinder_spectrum};
 use super::static_twist::static_connection_torques;
 use super::topology::{free_components, merge_rigid_gears};
 use crate::model::{ConnectionKind, GROUND, Model, graph};
+use crate::rubber::MaxwellChain;
 
 /// Where the linear analyses are evaluated.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -67,6 +68,9 @@ pub struct System {
     pub load: f64,
     /// Warnings raised while building (polynomials outside their range), for a person.
     pub warnings: Vec<String>,
+    /// The causal chain each rubber stage is represented by, per connection (`None` for
+    /// other connections, and for every connection of a [`System::nominal`]).
+    pub chains: Vec<Option<MaxwellChain>>,
 }
 
 impl System {
@@ -134,8 +138,11 @@ impl System {
         out
     }
 
-    /// Builds the system of a validated model at an operating point.
-    pub fn new(model: &Model, point: OperatingPoint) -> Result<Self, PhysicsError> {
+    /// Builds the system of a validated model at an operating point with seed 000's
+    /// nominal rubber law, `k·α_f(f)·(1 + iξ_T)` ([`ElementLaw::Rubber`]), which is not
+    /// causal: for comparison with the paper and closed-form checks, labelled "nominal"
+    /// wherever it is shown. Every analysis uses [`System::new`].
+    pub fn nominal(model: &Model, point: OperatingPoint) -> Result<Self, PhysicsError> {
         crate::model::validate(model)?;
         let ratios = graph::speed_ratios(model)?;
         let reference_node = graph::reference_node(model).ok_or(PhysicsError::Empty)?;
@@ -247,6 +254,7 @@ impl System {
                 .map(|e| cylinder_spectrum(e, point.load)),
             load: point.load,
             warnings: Vec::new(),
+            chains: vec![None; model.connections.len()],
         };
 
         let mean_torques = static_connection_torques(model, &system)?;

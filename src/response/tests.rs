@@ -59,10 +59,11 @@ fn exact_angles(omega: f64, torque: Complex64) -> (Complex64, Complex64) {
     (torque * d22 / det, torque * k_star / det)
 }
 
-/// The two-DOF model's system and its excitation at [`HARMONICS`].
+/// The two-DOF model's system with the nominal rubber law `k(1 + iψ/2π)` (the closed
+/// form's; [`System::nominal`]) and its excitation at [`HARMONICS`].
 fn two_dof() -> (System, Excitation) {
     let model = parse_model(&model_text(), "two-dof.toml").unwrap();
-    let system = System::new(&model, OperatingPoint::default()).unwrap();
+    let system = System::nominal(&model, OperatingPoint::default()).unwrap();
     let orders: Vec<f64> = HARMONICS.iter().map(|h| h.0).collect();
     let excitation = Excitation::new(&model, &system, 1.0, &orders);
     (system, excitation)

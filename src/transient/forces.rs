@@ -211,12 +211,19 @@ fn small_sin_cos(x: f64) -> (f64, f64) {
     (s, c)
 }
 
-/// Secant amplitude factor, temperature factors and the chain: the stage's torque (own
-/// shaft) is `c_Tstat·α_x(x)·α_Tc(T)·[k∞ φ + α_Tξ(T) (Σ k_j (φ − q_j) + c_v φ̇)]` (seed
-/// 000 eq. 1–2, 10–15 with the causal chain of [`super::maxwell`]; `c_v` the dashpot of
-/// the arms taken out, [`RubberPlant::viscous_s`]). With `amplitude_form = "elastic"`
-/// α_x moves inside onto the equilibrium spring, `c_Tstat·α_Tc(T)·[α_x(x)·k∞ φ + …]`: the
-/// arms, which carry the loss, are not stiffened. `[twist_own, rate_own]`: rad, rad/s.
+/// The amplitude law's static curve, temperature factors and the chain: the stage's
+/// torque (own shaft) is
+/// `c_Tstat·α_Tc(T)·[κ0·α_x(x)·φ + h'(φ)·D]`, with `D = (k∞ − κ0)(φ − φ_s) + a·
+/// (Σ k_j (φ − q_j) + c_v φ̇)` (`a = α_Tξ(T)/α_Tξ(T0)`, the chain fitted at the stage's
+/// own temperature `T0`) the chain's part above its static stiffness (seed 000
+/// eq. 1–2, 10–15 with the causal chain of [`crate::rubber`]; `φ_s` the static twist the
+/// chain vibrates about; `c_v` the dashpot of the arms taken out,
+/// [`RubberPlant::viscous_s`]) and `h' = d(α_x x)/dx` the amplitude law's tangent. Slow
+/// twist follows the static curve `κ0·α_x(x)·φ` exactly, and small vibration about `φ_s`
+/// sees `c_Tstat·α_Tc·h'(φ_s)·K*(ω)`: the tangent times the chain, as the spec linearizes
+/// the law (`model-format.md`, amplitude). With `amplitude_form = "elastic"` only the
+/// static curve carries α_x (`h' = 1` on `D`): the arms, which carry the loss, are not
+/// stiffened. `[twist_own, rate_own]`: rad, rad/s.
 fn rubber_state(
     r: &RubberPlant,
     [twist_own, rate_own]: [f64; 2],
@@ -228,9 +235,13 @@ fn rubber_state(
         Temperature::Fixed(t) => t,
         Temperature::Thermal { state, .. } => y[state],
     };
-    let alpha_x = match (&r.amplitude_poly, r.mm_per_rad) {
-        (Some(p), Some(mm)) => p.eval(twist_own.abs() * mm),
-        _ => 1.0,
+    let (alpha_x, tangent) = match (&r.amplitude_poly, r.mm_per_rad) {
+        (Some(p), Some(mm)) => {
+            let x = twist_own.abs() * mm;
+            let secant = p.eval(x);
+            (secant, secant + x * p.derivative(x))
+        }
+        _ => (1.0, 1.0),
     };
     let alpha_tc = r
         .temperature_stiffness_poly
@@ -239,14 +250,13 @@ fn rubber_state(
     let alpha_txi = r
         .temperature_damping_poly
         .as_ref()
-        .map_or(1.0, |p| p.eval(temperature));
-    // `Whole`: α_x scales the stage, arms (loss) with it (seed 000 eq. 13–15).
-    // `Elastic`: α_x scales only the equilibrium spring k∞ (model `amplitude_form`).
-    let (alpha_whole, alpha_equilibrium) = match r.amplitude_form {
-        AmplitudeForm::Whole => (alpha_x, 1.0),
-        AmplitudeForm::Elastic => (1.0, alpha_x),
+        .map_or(1.0, |p| p.eval(temperature))
+        / r.damping_reference;
+    let dynamic_scale = match r.amplitude_form {
+        AmplitudeForm::Whole => tangent,
+        AmplitudeForm::Elastic => 1.0,
     };
-    let scale = r.static_stiffness_nm_per_rad * alpha_whole * alpha_tc;
+    let scale = r.static_stiffness_nm_per_rad * alpha_tc;
     let mut arms_torque = 0.0;
     let mut arms_power = 0.0;
     let mut dy = dy;
@@ -260,11 +270,14 @@ fn rubber_state(
     }
     arms_torque += r.viscous_s * rate_own;
     arms_power += r.viscous_s * rate_own * rate_own;
+    let chain = &r.chain;
+    let dynamic = (chain.equilibrium - chain.static_stiffness) * (twist_own - r.static_twist_rad)
+        + alpha_txi * arms_torque;
     let torque_own =
-        scale * (alpha_equilibrium * r.chain.equilibrium * twist_own + alpha_txi * arms_torque);
+        scale * (chain.static_stiffness * alpha_x * twist_own + dynamic_scale * dynamic);
     ElementState {
         torque_ref_nm: torque_own * ratio,
-        power_w: scale * alpha_txi * arms_power,
+        power_w: scale * dynamic_scale * alpha_txi * arms_power,
     }
 }
 
@@ -290,7 +303,7 @@ mod tests {
     /// `arms` of its chain, at 25 °C without temperature laws.
     fn cubic_plant(a2: f64, form: AmplitudeForm, arms: Vec<(f64, f64)>) -> RubberPlant {
         use crate::model::Poly;
-        use crate::transient::maxwell::MaxwellChain;
+        use crate::rubber::MaxwellChain;
         RubberPlant {
             static_stiffness_nm_per_rad: 5.0e4,
             mm_per_rad: Some(100.0),
@@ -301,13 +314,16 @@ mod tests {
             amplitude_form: form,
             temperature_stiffness_poly: None,
             temperature_damping_poly: None,
+            damping_reference: 1.0,
             chain: MaxwellChain {
                 equilibrium: 1.0,
+                static_stiffness: 1.0,
                 arms,
                 band_hz: [10.0, 100.0],
                 stiffness_error: 0.0,
                 loss_error: 0.0,
             },
+            static_twist_rad: 0.0,
             arm_offset: 0,
             viscous_s: 0.0,
             temperature: Temperature::Fixed(25.0),
@@ -343,10 +359,12 @@ mod tests {
     #[test]
     fn the_elastic_form_leaves_the_arms_and_their_loss_unstiffened() {
         // At twist φ with one arm stretched by s: elastic T = k0·(α(φ)·φ + k1·s), loss
-        // k0·k1·s²/τ; whole T = k0·α(φ)·(φ + k1·s), loss α(φ)·k0·k1·s²/τ.
+        // k0·k1·s²/τ; whole T = k0·(α(φ)·φ + h'(φ)·k1·s), loss h'(φ)·k0·k1·s²/τ with
+        // h' = d(α x)/dx = 1 + 3·a2·x² the cubic's tangent.
         let (k0, a2, phi, s, k1, tau): (f64, f64, f64, f64, f64, f64) =
             (5.0e4, 20.0, 1.5e-3, 2.0e-4, 0.3, 0.01);
         let alpha = 1.0 + a2 * (100.0 * phi).powi(2);
+        let tangent = 1.0 + 3.0 * a2 * (100.0 * phi).powi(2);
         let y = [phi - s];
         let at = |form| {
             let plant = cubic_plant(a2, form, vec![(k1, tau)]);
@@ -361,7 +379,7 @@ mod tests {
         let close = |a: f64, b: f64| (a - b).abs() < 1e-12 * b.abs();
         assert!(close(t_e, k0 * (alpha * phi + k1 * s)), "{t_e}");
         assert!(close(p_e, loss), "{p_e}");
-        assert!(close(t_w, k0 * alpha * (phi + k1 * s)), "{t_w}");
-        assert!(close(p_w, alpha * loss), "{p_w}");
+        assert!(close(t_w, k0 * (alpha * phi + tangent * k1 * s)), "{t_w}");
+        assert!(close(p_w, tangent * loss), "{p_w}");
     }
 }

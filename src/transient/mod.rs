@@ -3,7 +3,7 @@
 //!
 //! - [`plant`]: the state layout and constants of a run; [`forces`]: the equations of
 //!   motion — crank-angle-dependent engine inertia, secant rubber stiffness with a causal
-//!   Maxwell chain ([`maxwell`]) and self-heating, gear backlash, a speed governor at the
+//!   Maxwell chain ([`crate::rubber`]) and self-heating, gear backlash, a speed governor at the
 //!   load of a free driveline;
 //! - [`dopri`]: Dormand–Prince 5(4) with error control and dense output;
 //! - [`run`]: settling cycle by cycle, then recording a steady run or a ramp
@@ -17,9 +17,6 @@ pub mod dopri;
 mod error;
 mod export;
 pub mod forces;
-pub mod maxwell;
-mod maxwell_cache;
-mod nnls;
 pub mod observe;
 mod periodic_start;
 pub mod plant;

@@ -27,7 +27,6 @@
 //! system in torsim's model terms; the solve is the sweep's in-place LU
 //! ([`crate::response`]).
 
-use super::maxwell::make_causal;
 use super::plant::{Plant, PlantLaw};
 use crate::model::Model;
 use crate::physics::{Excitation, System, matrices};
@@ -75,7 +74,7 @@ fn periodic_state(model: &Model, plant: &Plant, speed_rpm: f64, load: f64) -> Op
     if speed_rpm <= 0.0 || !speed_rpm.is_finite() {
         return None;
     }
-    let system = causal_copy(plant);
+    let system = causal_copy(model, plant);
     if system.dof_count() != n {
         return None;
     }
@@ -126,16 +125,25 @@ fn periodic_state(model: &Model, plant: &Plant, speed_rpm: f64, load: f64) -> Op
     plausible.then_some(offset)
 }
 
+/// Relaxation time of the stiff arm that stands in, in the linear system, for the
+/// dashpot of arms taken out ([`crate::rubber::MaxwellChain::take_fast_arms`]): an arm of
+/// stiffness `c_v/τ` is the dashpot `c_v` within `(ωτ)²` (1e-10 at 1.6 kHz).
+const DASHPOT_TAU_S: f64 = 1e-9;
+
 /// The plant's linear system with each rubber stage as the plant integrates it (its
-/// Maxwell chain), so that the start matches the time domain's own stiffness and loss.
-fn causal_copy(plant: &Plant) -> System {
+/// chain, less the arms taken out, plus their dashpot), so that the start matches the
+/// time domain's own stiffness and loss.
+fn causal_copy(model: &Model, plant: &Plant) -> System {
     let mut system = plant.system.clone();
-    make_causal(&mut system, |connection| {
-        plant.elements.iter().find_map(|p| match &p.law {
-            PlantLaw::Rubber(r) if p.connection == connection => Some(r.chain.clone()),
-            _ => None,
-        })
-    });
+    for p in &plant.elements {
+        if let PlantLaw::Rubber(r) = &p.law {
+            let mut chain = r.chain.clone();
+            if r.viscous_s > 0.0 {
+                chain.arms.push((r.viscous_s / DASHPOT_TAU_S, DASHPOT_TAU_S));
+            }
+            system.set_chain(model, p.connection, chain, None);
+        }
+    }
     system
 }
 
@@ -149,7 +157,7 @@ mod tests {
     }
 
     fn linear(model: &Model) -> bool {
-        linear_about_static_state(&Plant::new(model, 1.0, [1000.0, 3000.0], None).expect("plant"))
+        linear_about_static_state(&Plant::new(model, 1.0, None).expect("plant"))
     }
 
     /// The genset carries seed 000's amplitude law (eq. 1) on elements and keeps the

@@ -7,9 +7,8 @@
 //! `[θ_0…θ_{n−1}, ω_0…ω_{n−1}, q (Maxwell arms, own-shaft rad), T (rubber °C)]`.
 
 use super::TransientError;
-use super::maxwell::{MaxwellChain, excited_band_hz};
 use crate::model::{AmplitudeForm, ConnectionKind, GROUND, HarmonicAmplitude, Model, Poly};
-use crate::physics::PhysicsError;
+use crate::rubber::MaxwellChain;
 use crate::physics::{OperatingPoint, System, engine};
 
 /// Samples of the cylinder pressure table per working cycle (0.1° for a 4-stroke).
@@ -30,8 +29,15 @@ pub struct RubberPlant {
     pub temperature_stiffness_poly: Option<Poly>,
     /// α_Tξ(T).
     pub temperature_damping_poly: Option<Poly>,
-    /// The fitted chain.
+    /// α_Tξ at the stage's `temperature_c`, where its chain meets the loss: the arms
+    /// scale by α_Tξ(T) over this.
+    pub damping_reference: f64,
+    /// The stage's chain ([`crate::rubber`], from [`System::chains`]), less any arms taken
+    /// out as a dashpot.
     pub chain: MaxwellChain,
+    /// Static twist the mean torque puts on the stage at the run's load, own shaft, rad:
+    /// the chain vibrates about it, and `κ0` holds it.
+    pub static_twist_rad: f64,
     /// Index of the first arm state in the state vector.
     pub arm_offset: usize,
     /// The dashpot that stands in for the arms too fast to integrate
@@ -193,14 +199,13 @@ pub struct Plant {
 }
 
 impl Plant {
-    /// Builds the plant of `model` at engine `load` for speeds between `min_rpm` and
-    /// `max_rpm` (they set the band the rubber chains are fitted over). Maxwell arms
+    /// Builds the plant of `model` at engine `load`, each rubber stage as the chain of
+    /// the model's [`System`] (one law in every view, [`crate::rubber`]). Maxwell arms
     /// relaxing faster than `viscous_above_hz` (if given) become a dashpot
     /// ([`MaxwellChain::take_fast_arms`]).
     pub fn new(
         model: &Model,
         load: f64,
-        [min_rpm, max_rpm]: [f64; 2],
         viscous_above_hz: Option<f64>,
     ) -> Result<Self, TransientError> {
         let system = System::new(
@@ -216,7 +221,6 @@ impl Plant {
             inertia[system.dof_of_node[i]] += node.inertia_kg_m2 * system.speed_ratio[i].powi(2);
         }
         let damping = system.absolute_damping_nm_s_per_rad.clone();
-        let band = excited_band_hz(min_rpm, max_rpm, 24.0);
         let dof_of = |name: &str| {
             (name != GROUND)
                 .then(|| model.node_index(name).map(|i| system.dof_of_node[i]))
@@ -261,22 +265,10 @@ impl Plant {
                     ),
                 },
                 ConnectionKind::Rubber(stage) => {
-                    // α_f ≤ 0 anywhere from rest to the top of the band is refused before
-                    // fitting; the fit would chase a negative stiffness (issue 13).
-                    if let Some((frequency_hz, value)) = stage
-                        .frequency_poly
-                        .as_ref()
-                        .map(|p| p.min_over([0.0, band[1]]))
-                        .filter(|(_, v)| v.is_nan() || *v <= 0.0)
-                    {
-                        return Err(PhysicsError::FrequencyFactor {
-                            connection: c.name.clone(),
-                            frequency_hz,
-                            value,
-                        }
-                        .into());
-                    }
-                    let mut chain = MaxwellChain::fit(stage, band);
+                    // [`System::new`] gave every rubber stage its chain.
+                    let mut chain = system.chains[j].clone().ok_or_else(|| {
+                        TransientError::Model(format!("rubber stage `{}` has no chain", c.name))
+                    })?;
                     let viscous_s = viscous_above_hz.map_or(0.0, |f| chain.take_fast_arms(f));
                     let arm_offset = state_len;
                     state_len += chain.arms.len();
@@ -301,7 +293,11 @@ impl Plant {
                             amplitude_form: stage.amplitude_form,
                             temperature_stiffness_poly: stage.temperature_stiffness_poly.clone(),
                             temperature_damping_poly: stage.temperature_damping_poly.clone(),
+                            damping_reference: stage
+                                .state(None, stage.temperature_c, 0.0)
+                                .alpha_txi,
                             chain,
+                            static_twist_rad: system.static_twist_rad[j].unwrap_or(0.0),
                             arm_offset,
                             viscous_s,
                             temperature,

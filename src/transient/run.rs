@@ -5,7 +5,7 @@
 use super::TransientError;
 use super::budget::{StepBudget, bound_thermal_time_constants, name_collapse, state_name};
 use super::dopri::Dopri5;
-use super::maxwell::MaxwellChain;
+use crate::rubber::MaxwellChain;
 use super::observe::{Event, take_chunk};
 use super::periodic_start::add_periodic_state;
 use super::plant::{Plant, PlantLaw, Temperature};
@@ -40,7 +40,7 @@ pub struct RunOptions {
     /// at least (default 180: 4° of crank on a four-stroke engine).
     pub min_steps_per_cycle: f64,
     /// Rubber Maxwell arms that relax faster than this, Hz, run as their low-frequency
-    /// limit, a dashpot ([`super::maxwell::MaxwellChain::take_fast_arms`]; default `None`:
+    /// limit, a dashpot ([`MaxwellChain::take_fast_arms`]; default `None`:
     /// every arm is integrated). For runs of which only frequencies below a third of it
     /// matter: the fastest arms bound the explicit integrator's step.
     pub viscous_above_hz: Option<f64>,
@@ -142,12 +142,7 @@ pub fn simulate_observed(
     let [from_rpm, to_rpm] = run.speeds_rpm();
     let duration_s = run.duration_s;
     check_run(model, run, &options)?;
-    let mut plant = Plant::new(
-        model,
-        options.load,
-        [from_rpm.min(to_rpm), from_rpm.max(to_rpm)],
-        options.viscous_above_hz,
-    )?;
+    let mut plant = Plant::new(model, options.load, options.viscous_above_hz)?;
     let cycle_rad = plant.engine.as_ref().map_or(2.0 * TAU, |e| e.cycle_rad);
     let mut profile = SpeedProfile::steady(from_rpm);
     let mut mass = vec![0.0; plant.n_dof];

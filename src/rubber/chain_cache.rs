@@ -1,10 +1,13 @@
 //! Maxwell chain fits, remembered. A fit is a non-negative least-squares problem of some
-//! 90 rows; a diagnosis asks for the same few chains thousands of times (every run of
-//! every time-domain evaluation, every linear surrogate), and they took a tenth of its
-//! time. A chain depends only on the stage's ψ and frequency law and on the band, so
+//! 100 rows; a diagnosis asks for the same few chains thousands of times (every system it
+//! builds, every time-domain run), and they took a tenth of its time. A chain depends
+//! only on the stage's ψ and frequency law, the band and the modes it is fitted at, so
 //! those, bit for bit, are the key: a remembered chain is the very chain a new fit gives.
+//!
+//! Written by hand: a bounded map behind a mutex is all it needs; a caching crate would
+//! add an eviction policy this use does not need.
 
-use super::maxwell::MaxwellChain;
+use super::chain::{MaxwellChain, ModeTarget};
 use crate::model::RubberStage;
 use std::collections::HashMap;
 use std::sync::{Mutex, MutexGuard, OnceLock, PoisonError};
@@ -12,15 +15,24 @@ use std::sync::{Mutex, MutexGuard, OnceLock, PoisonError};
 /// Chains kept at most; the memory is emptied when it is full (a chain is ~1 kB).
 const CAPACITY: usize = 4096;
 
-/// What a fit depends on: ψ, the frequency law (coefficients and range) and the band.
+/// What a fit depends on: ψ, the temperature and α_Tξ (the loss it meets), the frequency
+/// law (coefficients and range), the band and the modes.
 type Key = Vec<u64>;
 
-fn key(stage: &RubberStage, band_hz: [f64; 2]) -> Key {
+fn key(stage: &RubberStage, band_hz: [f64; 2], modes: &[ModeTarget]) -> Key {
     let mut key = vec![
         stage.psi.to_bits(),
         band_hz[0].to_bits(),
         band_hz[1].to_bits(),
+        stage.temperature_c.to_bits(),
     ];
+    if let Some(p) = &stage.temperature_damping_poly {
+        key.push(u64::MAX - 2);
+        key.extend(p.coeffs.iter().map(|c| c.to_bits()));
+        if let Some(range) = p.range {
+            key.extend(range.iter().map(|r| r.to_bits()));
+        }
+    }
     if let Some(law) = &stage.frequency_power_law {
         key.extend([u64::MAX, law.exponent.to_bits(), law.reference_hz.to_bits()]);
     }
@@ -29,6 +41,10 @@ fn key(stage: &RubberStage, band_hz: [f64; 2]) -> Key {
         if let Some(range) = p.range {
             key.extend(range.iter().map(|r| r.to_bits()));
         }
+    }
+    key.push(u64::MAX - 1);
+    for m in modes {
+        key.extend([m.frequency_hz.to_bits(), m.energy_share.to_bits()]);
     }
     key
 }
@@ -44,16 +60,22 @@ fn memory() -> MutexGuard<'static, HashMap<Key, MaxwellChain>> {
 }
 
 impl MaxwellChain {
-    /// Fits the chain to `stage`'s α_f and ψ over `band_hz = [lo, hi]` (lo > 0), or gives
-    /// back the chain fitted before to the same ψ, law and band.
+    /// Fits the chain to `stage`'s α_f and ψ over `band_hz = [lo, hi]` (lo > 0) alone, with
+    /// no mode rows ([`MaxwellChain::fit_at_modes`]).
     pub fn fit(stage: &RubberStage, band_hz: [f64; 2]) -> Self {
-        let key = key(stage, band_hz);
+        Self::fit_at_modes(stage, band_hz, &[])
+    }
+
+    /// Fits the chain to `stage`'s α_f and ψ over `band_hz = [lo, hi]` (lo > 0) and at
+    /// `modes`, or gives back the chain fitted before to the same ψ, law, band and modes.
+    pub fn fit_at_modes(stage: &RubberStage, band_hz: [f64; 2], modes: &[ModeTarget]) -> Self {
+        let key = key(stage, band_hz, modes);
         let remembered = memory().get(&key).cloned();
         if let Some(chain) = remembered {
             return chain;
         }
         // Fitted outside the lock, so other threads' look-ups do not wait for it.
-        let chain = Self::fit_uncached(stage, band_hz);
+        let chain = Self::fit_uncached(stage, band_hz, modes);
         let mut map = memory();
         if map.len() >= CAPACITY {
             map.clear();
@@ -91,7 +113,7 @@ mod tests {
         let band = [2.0, 3600.0];
         for (psi, a2) in [(1.0, 1e-7), (0.9, 1e-7), (1.0, 2e-7)] {
             let s = stage(psi, a2);
-            let fresh = MaxwellChain::fit_uncached(&s, band);
+            let fresh = MaxwellChain::fit_uncached(&s, band, &[]);
             assert_eq!(MaxwellChain::fit(&s, band), fresh);
             assert_eq!(MaxwellChain::fit(&s, band), fresh);
         }
@@ -99,7 +121,7 @@ mod tests {
         let s = stage(1.0, 1e-7);
         assert_eq!(
             MaxwellChain::fit(&s, [2.0, 1800.0]),
-            MaxwellChain::fit_uncached(&s, [2.0, 1800.0])
+            MaxwellChain::fit_uncached(&s, [2.0, 1800.0], &[])
         );
         assert_ne!(
             MaxwellChain::fit(&s, [2.0, 1800.0]),

@@ -1,46 +1,77 @@
-//! A causal time-domain representation of a rubber stage's frequency-dependent stiffness
-//! and hysteretic damping: a generalized Maxwell chain fitted over the excited band.
+//! The causal representation of a rubber stage that every view of a model uses: a
+//! generalized Maxwell chain fitted to seed 000's law where the model's modes and excited
+//! orders lie (`spec/model-format.md`, `kind = "rubber"`; issue 15).
 //!
 //! The torque (per unit static stiffness `c_Tstat`, before the amplitude and temperature
-//! factors) is `k∞·φ + Σ_j k_j (φ − q_j)` with `q̇_j = (φ − q_j)/τ_j`, whose complex
-//! stiffness is `K*(ω) = k∞ + Σ_j k_j·iωτ_j/(1 + iωτ_j)`. The target is seed 000's law,
-//! `α_f(f)·(1 + iξ0)` with `ξ0 = ψ/2π` (eq. 9, 13–15), or a causal power law's
-//! `(f/f_ref)^n·(1 + i·max(ξ0, tan(nπ/2)))` ([`crate::model::frequency_law`], held below
-//! the band). `k∞ = α_f(0)` (the power law's value at the band's lower end) keeps the static
-//! stiffness exact (the twist under the mean torque); the arm stiffnesses `k_j ≥ 0` at
-//! relaxation times spaced four per decade over the band are found by non-negative least
-//! squares on the relative errors of the real and the imaginary part.
+//! factors) of vibration `φ` about the static twist is `k∞·φ + Σ_j k_j (φ − q_j)` with
+//! `q̇_j = (φ − q_j)/τ_j`; its complex stiffness is `K*(ω) = k∞ + Σ_j k_j·iωτ_j/(1 + iωτ_j)`.
+//! The static twist itself is held by the static stiffness `κ0 = α_f(0)` (a causal power
+//! law's plateau below the band), so the mean twist under the mean torque is the spec's.
+//!
+//! The target is seed 000's law `α_f(f)·(1 + iξ0)`, `ξ0 = ψ/2π·α_Tξ(T0)` at the stage's
+//! `temperature_c` (eq. 9, 11, 13–15), or a causal power law
+//! `(f/f_ref)^n·(1 + i·max(ξ0, tan(nπ/2)))` ([`crate::model::frequency_law`]).
+//! Rows of the non-negative least squares, all as relative errors:
+//! - the band, [`SAMPLES_PER_DECADE`] frequencies per decade; storage rows weigh
+//!   [`STIFFNESS_WEIGHT`] × the loss rows (storage places the resonances);
+//! - each of the model's modes inside `[lo/3, 1.5·hi]`, weighted [`MODE_WEIGHT`] × the
+//!   stage's share of that mode's strain energy: where the stage matters, the chain meets
+//!   the law there;
+//! - one static row, [`STATIC_WEIGHT`], holding `k∞` softly at `κ0`.
+//!
+//! Unknowns: `k∞ ≥ 0` and arm stiffnesses `k_j ≥ 0` at relaxation times spaced
+//! [`ARMS_PER_DECADE`] per decade from `min(lo, lowest mode)/1.5` to `1.5·hi`.
 //!
 //! A frequency-independent loss factor is not causal (Kramers–Kronig): a causal material
-//! with a nearly constant loss must stiffen with frequency. The fit therefore meets ψ and
-//! α_f only approximately; [`MaxwellChain::stiffness_error`] and
-//! [`MaxwellChain::loss_error`] give its worst relative errors over the band.
+//! with a nearly constant loss must stiffen with frequency, by about `(2/π)·ξ·ln(f2/f1)`
+//! between two frequencies. The fit therefore meets ψ and α_f exactly at one mode, closely
+//! at modes near each other, and only approximately over a wide band;
+//! [`MaxwellChain::stiffness_error`] and [`MaxwellChain::loss_error`] give its worst
+//! relative errors over the band, and [`crate::modal::law_deviations`] its deviation at
+//! each mode.
 
 use super::nnls::nnls;
 use crate::model::RubberStage;
-use crate::physics::{ElementLaw, System};
 use nalgebra::{DMatrix, DVector};
 use num_complex::Complex64;
 use std::f64::consts::TAU;
 
 /// Relaxation times per decade of frequency.
-const ARMS_PER_DECADE: f64 = 4.0;
-/// Fit frequencies per decade.
-const SAMPLES_PER_DECADE: f64 = 12.0;
+pub const ARMS_PER_DECADE: f64 = 4.0;
+/// Fit frequencies per decade of the band.
+pub const SAMPLES_PER_DECADE: f64 = 12.0;
 /// Weight of the stiffness rows against the loss rows: stiffness places the resonances,
 /// so it is matched first where the two cannot both be met.
-const STIFFNESS_WEIGHT: f64 = 2.0;
-/// A causal power law's chain rests on the law's value this factor below the slowest arm:
-/// the law's relaxation goes on below the band, and the loss it gives at the band's lower
-/// end needs arms below it (placing the plateau at the band's end left the chain 3–5 %
-/// stiff and 5–35 % short of tan(nπ/2) near it; measured, `fits_a_causal_power_law_with_its_loss`).
+pub const STIFFNESS_WEIGHT: f64 = 2.0;
+/// Weight of a mode's rows per unit strain-energy share of the stage in that mode: a
+/// mode the stage dominates outweighs the ~40 band rows together by 2.5×, so the chain
+/// meets the law at it (to 0.1 % for one such mode, measured in the tests below).
+pub const MODE_WEIGHT: f64 = 100.0;
+/// Weight of the static row `k∞ = κ0`: soft, so that `k∞` may give way where the band's
+/// Kramers–Kronig stiffening asks for it, yet stays near the static stiffness.
+pub const STATIC_WEIGHT: f64 = 0.3;
+/// A causal power law's static stiffness is the law's value this factor below the slowest
+/// arm: the law's relaxation goes on below the band, and the loss it gives at the band's
+/// lower end needs arms below it.
 const PLATEAU_BELOW_ARMS: f64 = 4.0;
+
+/// A mode the chain is fitted at: its frequency and the stage's share of its strain energy.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ModeTarget {
+    /// Natural frequency, Hz.
+    pub frequency_hz: f64,
+    /// The stage's share of the mode's strain energy, 0…1.
+    pub energy_share: f64,
+}
 
 /// A fitted generalized Maxwell chain (stiffnesses relative to `c_Tstat`).
 #[derive(Debug, Clone, PartialEq)]
 pub struct MaxwellChain {
-    /// Equilibrium stiffness `k∞`: α_f at 0 Hz.
+    /// Equilibrium stiffness `k∞` of vibration about the static twist, relative.
     pub equilibrium: f64,
+    /// Static stiffness `κ0` that holds the static twist, relative: α_f(0), or a power
+    /// law's plateau.
+    pub static_stiffness: f64,
     /// Arms `(k_j, τ_j)`: relative stiffness and relaxation time in s; arms the fit gave
     /// zero stiffness are dropped.
     pub arms: Vec<(f64, f64)>,
@@ -53,50 +84,70 @@ pub struct MaxwellChain {
 }
 
 impl MaxwellChain {
-    /// Fits the chain to `stage`'s α_f and ψ over `band_hz = [lo, hi]` (lo > 0); what
-    /// [`MaxwellChain::fit`] does when it has not seen the stage and band before.
-    pub(super) fn fit_uncached(stage: &RubberStage, band_hz: [f64; 2]) -> Self {
+    /// Fits the chain to `stage`'s α_f and ψ over `band_hz = [lo, hi]` (lo > 0) and at
+    /// `modes`; what [`MaxwellChain::fit_at_modes`] does when it has not seen the stage,
+    /// band and modes before.
+    pub(super) fn fit_uncached(stage: &RubberStage, band_hz: [f64; 2], modes: &[ModeTarget]) -> Self {
         let [lo, hi] = [band_hz[0].max(1e-3), band_hz[1].max(band_hz[0] * 1.01)];
-        let catalogue = stage.psi / TAU;
-        let xi0 = stage
-            .frequency_power_law
-            .map_or(catalogue, |l| l.loss_factor(catalogue));
+        // The nominal loss factor at the stage's own temperature, ξ_T = ψ/2π·α_Tξ(T0)
+        // (eq. 11, 15; a power law's tan(nπ/2) if larger): the chain meets the law there,
+        // and its arms scale by α_Tξ(T)/α_Tξ(T0) at other temperatures.
+        let xi0 = stage.state(None, stage.temperature_c, 0.0).loss_factor;
         let alpha_f = |f: f64| stage.frequency_factor(f);
-        let decades = (hi / lo).log10();
-        // Arms from half an octave below the band to half an octave above it.
-        let (arm_lo, arm_hi) = (lo / 1.5, hi * 1.5);
-        // A power law has no static limit of its own: below the band it is held at the
-        // band's lower end, the rubbery plateau ([`crate::model::frequency_law`]).
-        let equilibrium = match stage.frequency_power_law {
+        let modes: Vec<ModeTarget> = modes
+            .iter()
+            .copied()
+            .filter(|m| {
+                m.frequency_hz >= lo / 3.0 && m.frequency_hz <= 1.5 * hi && m.energy_share > 0.0
+            })
+            .collect();
+        let lowest = modes.iter().map(|m| m.frequency_hz).fold(lo, f64::min);
+        let (arm_lo, arm_hi) = (lowest / 1.5, hi * 1.5);
+        let static_stiffness = match stage.frequency_power_law {
             Some(law) => law.storage(arm_lo / PLATEAU_BELOW_ARMS),
             None => alpha_f(0.0),
         };
         let n_arms = ((arm_hi / arm_lo).log10() * ARMS_PER_DECADE).ceil() as usize + 1;
-        let arm_hz: Vec<f64> = log_space(arm_lo, arm_hi, n_arms);
-        let taus: Vec<f64> = arm_hz.iter().map(|f| 1.0 / (TAU * f)).collect();
-        let n_samples = ((decades * SAMPLES_PER_DECADE).ceil() as usize + 1).max(8);
-        let freqs = log_space(lo, hi, n_samples);
-        let mut a = DMatrix::<f64>::zeros(2 * n_samples, n_arms);
-        let mut b = DVector::<f64>::zeros(2 * n_samples);
-        for (s, &f) in freqs.iter().enumerate() {
+        let taus: Vec<f64> = log_space(arm_lo, arm_hi, n_arms)
+            .iter()
+            .map(|f| 1.0 / (TAU * f))
+            .collect();
+        let n_samples = (((hi / lo).log10() * SAMPLES_PER_DECADE).ceil() as usize + 1).max(8);
+        // Rows: (frequency, weight).
+        let rows: Vec<(f64, f64)> = log_space(lo, hi, n_samples)
+            .into_iter()
+            .map(|f| (f, 1.0))
+            .chain(modes.iter().map(|m| (m.frequency_hz, MODE_WEIGHT * m.energy_share)))
+            .collect();
+        let n_cols = n_arms + 1;
+        let mut a = DMatrix::<f64>::zeros(2 * rows.len() + 1, n_cols);
+        let mut b = DVector::<f64>::zeros(2 * rows.len() + 1);
+        for (s, &(f, weight)) in rows.iter().enumerate() {
             let target = alpha_f(f);
+            let (ws, wl) = (weight * STIFFNESS_WEIGHT / target, weight / (target * xi0));
+            a[(2 * s, 0)] = ws;
             for (j, &tau) in taus.iter().enumerate() {
                 let arm = arm_response(TAU * f, tau);
-                a[(2 * s, j)] = STIFFNESS_WEIGHT * arm.re / target;
-                a[(2 * s + 1, j)] = arm.im / (target * xi0);
+                a[(2 * s, j + 1)] = ws * arm.re;
+                a[(2 * s + 1, j + 1)] = wl * arm.im;
             }
-            b[2 * s] = STIFFNESS_WEIGHT * (target - equilibrium) / target;
-            b[2 * s + 1] = 1.0;
+            b[2 * s] = ws * target;
+            b[2 * s + 1] = wl * target * xi0;
         }
+        let last = 2 * rows.len();
+        a[(last, 0)] = STATIC_WEIGHT / static_stiffness;
+        b[last] = STATIC_WEIGHT;
         let k = nnls(&a, &b);
         let arms: Vec<(f64, f64)> = k
             .iter()
+            .skip(1)
             .zip(&taus)
             .filter(|(k, _)| **k > 0.0)
             .map(|(k, t)| (*k, *t))
             .collect();
         let mut chain = MaxwellChain {
-            equilibrium,
+            equilibrium: k[0],
+            static_stiffness,
             arms,
             band_hz: [lo, hi],
             stiffness_error: 0.0,
@@ -159,38 +210,6 @@ fn log_space(lo: f64, hi: f64, n: usize) -> Vec<f64> {
     (0..n).map(|i| lo * (step * i as f64).exp()).collect()
 }
 
-/// The band a steady run at `speed_rpm` (or a ramp between two speeds) excites: from a
-/// quarter of order 0.5 at the lowest speed to 1.5 × order `max_order` at the highest, Hz.
-pub fn excited_band_hz(min_speed_rpm: f64, max_speed_rpm: f64, max_order: f64) -> [f64; 2] {
-    let lo = (0.25 * 0.5 * min_speed_rpm / 60.0).max(0.1);
-    let hi = (1.5 * max_order * max_speed_rpm / 60.0).max(4.0 * lo);
-    [lo, hi]
-}
-
-/// Turns each rubber element of `system` ([`ElementLaw::Rubber`]) into the linear law of
-/// the chain `chain_of(connection)` gives ([`ElementLaw::Causal`]; an element it gives
-/// none for stays as it is): the linear view of what the time domain integrates.
-pub fn make_causal(system: &mut System, mut chain_of: impl FnMut(usize) -> Option<MaxwellChain>) {
-    for e in &mut system.elements {
-        let ElementLaw::Rubber {
-            base_stiffness_nm_per_rad,
-            elastic_nm_per_rad,
-            ..
-        } = e.law
-        else {
-            continue;
-        };
-        if let Some(chain) = chain_of(e.connection) {
-            e.law = ElementLaw::Causal {
-                base_stiffness_nm_per_rad,
-                equilibrium: chain.equilibrium,
-                arms: chain.arms,
-                elastic_nm_per_rad,
-            };
-        }
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -198,7 +217,7 @@ mod tests {
 
     #[test]
     fn fast_arms_become_their_dashpot() {
-        let full = MaxwellChain::fit(&stage(None), excited_band_hz(1000.0, 6000.0, 24.0));
+        let full = MaxwellChain::fit(&stage(None), [62.5, 3600.0]);
         let mut reduced = full.clone();
         let above_hz = 2400.0;
         let viscous_s = reduced.take_fast_arms(above_hz);
@@ -245,22 +264,23 @@ mod tests {
     }
 
     /// A nearly causal target — constant stiffness with a small loss (ψ = 0.2, ξ = 0.032)
-    /// over one decade. Kramers–Kronig asks ~(2/π)·ξ·ln 10 ≈ 5 % stiffening across it,
-    /// and with the static stiffness held exact the arms can only add stiffness, so the
-    /// fit is 7.1 % stiff at the top of the band and 10.4 % off in loss (measured); the
-    /// bounds leave a little room.
+    /// over one decade. Kramers–Kronig asks ~(2/π)·ξ·ln 10 ≈ 5 % stiffening across it;
+    /// with `k∞` free the fit centres that on the band: k∞ = 0.941, worst errors 2.5 % in
+    /// storage and 0.36 % in loss (measured; with k∞ pinned at 1 they were 7.1 % and
+    /// 10.4 %). The bounds leave a little room.
     #[test]
     fn fits_a_nearly_causal_law() {
         let mut s = stage(None);
         s.psi = 0.2;
         let chain = MaxwellChain::fit(&s, [20.0, 200.0]);
-        assert!((chain.complex_stiffness(0.0).re - 1.0).abs() < 1e-15);
+        assert_eq!(chain.static_stiffness, 1.0);
+        assert!((chain.equilibrium - 1.0).abs() < 0.07, "{}", chain.equilibrium);
         assert!(
-            chain.stiffness_error < 0.075,
+            chain.stiffness_error < 0.03,
             "stiffness error {}",
             chain.stiffness_error
         );
-        assert!(chain.loss_error < 0.11, "loss error {}", chain.loss_error);
+        assert!(chain.loss_error < 0.01, "loss error {}", chain.loss_error);
         assert!(chain.arms.iter().all(|(k, t)| *k > 0.0 && *t > 0.0));
     }
 
@@ -281,7 +301,7 @@ mod tests {
         let eta = (0.12 * std::f64::consts::FRAC_PI_2).tan();
         // Held on the plateau below the band.
         let plateau = law.storage(2.0 / 1.5 / PLATEAU_BELOW_ARMS);
-        assert!((chain.equilibrium - plateau).abs() < 1e-15);
+        assert!((chain.static_stiffness - plateau).abs() < 1e-15);
         // Measured: 2.0 % in storage, 17 % in loss (at the band's lower end, where the
         // arms below it are missing).
         assert!(chain.stiffness_error < 0.025, "{}", chain.stiffness_error);
@@ -316,7 +336,8 @@ mod tests {
             range: Some([0.0, 300.0]),
         };
         let chain = MaxwellChain::fit(&stage(Some(poly)), [10.0, 400.0]);
-        assert!((chain.complex_stiffness(0.0).re - 1.0).abs() < 1e-15);
+        // Measured: k∞ = 1.36, worst errors 34 % (storage) and 21 % (loss).
+        assert_eq!(chain.static_stiffness, 1.0);
         assert!(
             chain.stiffness_error > 0.1 && chain.stiffness_error < 0.45,
             "{}",
@@ -333,5 +354,38 @@ mod tests {
             .map(|&f| chain.complex_stiffness(f).re)
             .collect();
         assert!(re.windows(2).all(|w| w[1] > w[0]), "{re:?}");
+    }
+
+    /// Two modes a decade and a half apart (15 and 226 Hz, the spec's three-DOF example),
+    /// each with half the stage's energy, on a flat law with ψ = 0.9: Kramers–Kronig asks
+    /// ≈ 25 % stiffening between them to keep the loss at both, so the fit shares the
+    /// difference (measured: −1.2 % / +0.9 % at 15 Hz, +4.9 % / −5.5 % at 226 Hz in storage
+    /// and loss factor). A mode alone is met closely (measured −0.015 % and +0.002 %).
+    #[test]
+    fn meets_the_law_at_its_modes() {
+        let mut s = stage(None);
+        s.psi = 0.9;
+        let xi = 0.9 / TAU;
+        let one = [ModeTarget {
+            frequency_hz: 15.0,
+            energy_share: 1.0,
+        }];
+        let chain = MaxwellChain::fit_at_modes(&s, [1.25, 750.0], &one);
+        let k = chain.complex_stiffness(15.0);
+        assert!((k.re - 1.0).abs() < 1e-3, "{k}");
+        assert!((k.im / k.re / xi - 1.0).abs() < 1e-2, "{k}");
+        let two = [
+            one[0],
+            ModeTarget {
+                frequency_hz: 226.0,
+                energy_share: 0.5,
+            },
+        ];
+        let chain = MaxwellChain::fit_at_modes(&s, [1.25, 750.0], &two);
+        for f in [15.0, 226.0] {
+            let k = chain.complex_stiffness(f);
+            assert!((k.re - 1.0).abs() < 0.06, "{f} Hz: {k}");
+            assert!((k.im / k.re / xi - 1.0).abs() < 0.08, "{f} Hz: {k}");
+        }
     }
 }
