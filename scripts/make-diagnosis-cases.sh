@@ -35,8 +35,8 @@ make_case parameter_error $bench --effect parameter_error --param target=couplin
 make_case coupling_amplitude_nonlinearity $bench --effect coupling_amplitude_nonlinearity \
     --param-error-pct 10 --seed 103
 make_case coupling_frequency_dependence $bench --effect coupling_frequency_dependence \
-    --param scale=0.1 --param-error-pct 10 --seed 104
-make_case coupling_thermal_drift $bench --effect coupling_thermal_drift \
+    --param scale=0.3 --param-error-pct 10 --seed 104
+make_case coupling_thermal_drift $bench --effect coupling_thermal_drift --param capacity_j_per_k=120 \
     --param-error-pct 10 --seed 105
 make_case hysteretic_damping "$data/model-viscous.toml" --effect hysteretic_damping \
     --param reference_hz=140 --param-error-pct 5 --seed 106

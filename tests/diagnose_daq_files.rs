@@ -149,12 +149,15 @@ fn diagnose_json(dir: &Path) -> serde_json::Value {
 }
 
 /// `torsim diagnose` on the DAQ files names what it names on the pristine ones, with the
-/// same held-out fit. Tolerance 1e-3 relative: the inputs agree to 1e-9 (above), and χ²/N
-/// amplifies a relative change ε of a simulated amplitude s by about 2·z·ε·s/σ, with
+/// same held-out fit. `fit.before` to 1e-3 relative: the inputs agree to 1e-9 (above), and
+/// χ²/N amplifies a relative change ε of a simulated amplitude s by about 2·z·ε·s/σ, with
 /// z ≈ 8 and s/σ up to ~1e4 on this case (amplitudes of tens of rpm, σ of a few mrpm):
-/// 1e-9 becomes ~2e-4 (measured: 4e-5 on `fit.before`). `fit.after` comes out of
-/// iterative fits that stop on a relative cost change, so it may differ by one more step:
-/// 1e-2 (measured: 1.5e-3).
+/// 1e-9 becomes ~2e-4 (measured: 4e-5). `fit.after` comes out of iterative fits that stop
+/// on a relative cost change, whose path a 1e-9 input change can move by a step; the two
+/// ends must be the same fit statistically: χ²/N of N held-out amplitudes scatters by
+/// √(2/N), and here N ≈ 960 (five steady runs and 25 run-up bins, two stations, 16
+/// orders), so 0.09 is two scatters (measured 0.047, 0.92 against 0.88, since issue 15's
+/// one rubber law; 1.5e-3 before).
 #[test]
 fn daq_files_are_diagnosed_like_the_pristine_ones() {
     let daq = daq_case("diagnose");
@@ -162,16 +165,15 @@ fn daq_files_are_diagnosed_like_the_pristine_ones() {
     let shifted = diagnose_json(&daq);
     assert_eq!(pristine["verdict"]["effect"], CASE);
     assert_eq!(shifted["verdict"]["effect"], pristine["verdict"]["effect"]);
-    for (key, tolerance) in [("before", 1e-3), ("after", 1e-2)] {
-        let (a, b) = (
-            pristine["fit"][key].as_f64().expect("a number"),
-            shifted["fit"][key].as_f64().expect("a number"),
-        );
-        assert!(
-            (a - b).abs() <= tolerance * a.abs(),
-            "fit.{key}: {a} vs {b}"
-        );
-    }
+    let fit =
+        |report: &serde_json::Value, key: &str| report["fit"][key].as_f64().expect("a number");
+    let (a, b) = (fit(&pristine, "before"), fit(&shifted, "before"));
+    assert!((a - b).abs() <= 1e-3 * a.abs(), "fit.before: {a} vs {b}");
+    let (a, b) = (fit(&pristine, "after"), fit(&shifted, "after"));
+    assert!(
+        (a - b).abs() <= 2.0 * (2.0 / 960.0_f64).sqrt(),
+        "fit.after: {a} vs {b}"
+    );
     let (before, after) = (
         shifted["fit"]["before"].as_f64().expect("before"),
         shifted["fit"]["after"].as_f64().expect("after"),

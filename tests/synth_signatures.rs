@@ -322,12 +322,23 @@ fn parameter_error_moves_a_mode_without_new_orders() {
     let (n, e) = (p(&none), p(&eff));
     eprintln!("parameter error: mode-1 peak {n} → {e}");
     assert!(e < 0.985 * n && e > 0.92 * n, "{n} → {e}");
-    let r = rec(&eff, "run-up");
-    assert!(
-        analyse(r).unwrap().stations[0]
-            .orders
+    // A run-up's order analysis leaks the swept resonances into the half orders (up to
+    // 0.042 rpm at the crank without the effect); the error adds to that leakage no more
+    // than 0.03 rpm, a tenth of the smallest half order a real imbalance makes here (0.3
+    // rpm, tests/data/diagnosis/README.md). Measured: at most 0.014 rpm.
+    let halves = |recs: &[SynthRecording]| -> Vec<(f64, f64)> {
+        analyse(rec(recs, "run-up"))
+            .unwrap()
+            .stations
             .iter()
+            .flat_map(|s| s.orders.iter())
             .filter(|o| o.order.fract() != 0.0)
-            .all(|o| o.amplitude < 0.05)
-    );
+            .map(|o| (o.order, o.amplitude))
+            .collect()
+    };
+    let (without, with) = (halves(&none), halves(&eff));
+    assert_eq!(without.len(), with.len());
+    for ((q, a), (_, b)) in without.iter().zip(&with) {
+        assert!((b - a).abs() < 0.03, "half order {q}: {a} → {b} rpm");
+    }
 }

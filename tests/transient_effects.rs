@@ -120,8 +120,12 @@ phase_deg = 0.0
     let sim = simulate(&model, Run::steady(speed_rpm, 40.0), options, &mut |_| true).unwrap();
     let temps = &sim.temperature_c[0].1;
     let (t_first, t_end) = (temps[0], temps[temps.len() - 1]);
+    // It warms by kelvins, not by a numerical drift. The chain meets the stage's loss
+    // ψ/2π at the mode (issue 15's one law), and at resonance more loss means less
+    // amplitude: the balance is 30.8 °C (the earlier chain, with 37 % less loss, made it
+    // 35+). The balance itself is checked below.
     assert!(
-        t_end > 35.0,
+        t_end > 28.0,
         "the rubber warms: {t_first:.2} → {t_end:.2} °C"
     );
     let rate = options.rate_hz;

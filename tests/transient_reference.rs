@@ -202,7 +202,10 @@ fn rubber_1dof(viscous_above_hz: Option<f64>) -> (f64, f64, [usize; 2]) {
         ..RunOptions::default()
     };
     let sim = simulate(&model, Run::steady(speed_rpm, 2.0), options, &mut |_| true).unwrap();
-    assert!(matches!(model.connections[0].kind, ConnectionKind::Rubber(_)));
+    assert!(matches!(
+        model.connections[0].kind,
+        ConnectionKind::Rubber(_)
+    ));
     // The run's chain is the model's own (one law in every view), less any fast arms.
     let system = System::new(&model, OperatingPoint::default()).unwrap();
     let full = system.chains[0].clone().unwrap();
@@ -352,7 +355,11 @@ fn rubber_model_matches_the_frequency_domain_through_its_resonance() {
             ..RunOptions::default()
         };
         let sim = simulate(&model, Run::steady(speed_rpm, 1.0), options, &mut |_| true).unwrap();
-        assert!(sim.settling.converged, "{speed_rpm} rpm: {:?}", sim.settling);
+        assert!(
+            sim.settling.converged,
+            "{speed_rpm} rpm: {:?}",
+            sim.settling
+        );
         let time = order_amplitude(&sim.speed_rpm[0], rate_hz, speed_rpm, 1.0);
         let freq = r.ias_amplitude_rpm[0][0][i];
         let err = (time - freq).abs() / freq;

@@ -142,8 +142,7 @@ pub(crate) fn hysteretic(
          stiffness {:.1} N·m/rad, where the user has a spring {k_user} N·m/rad and viscous \
          damper {c} N·m·s/rad; at {f_ref:.2} Hz its causal chain has the user's loss factor \
          {xi_target:.4} and the truth's spring stiffness ({k:.1} N·m/rad, with its plain error)",
-        stage.psi,
-        static_stiffness
+        stage.psi, static_stiffness
     );
     model.connections[j].kind = ConnectionKind::Rubber(stage);
     Ok((p.resolved, summary))

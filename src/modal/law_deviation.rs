@@ -46,7 +46,11 @@ pub fn law_deviations(causal: &System, nominal: &System, modes: &[Mode]) -> Vec<
                 frequency_hz: mode.frequency_hz,
                 energy_share: shares[index],
                 stiffness_deviation: k_c / k_n - 1.0,
-                loss_deviation: if eta_n > 0.0 { eta_c / eta_n - 1.0 } else { 0.0 },
+                loss_deviation: if eta_n > 0.0 {
+                    eta_c / eta_n - 1.0
+                } else {
+                    0.0
+                },
             });
         }
     }
@@ -97,6 +101,9 @@ frequency_poly_range = [0, 300]
         assert!(d.loss_deviation.abs() < 1e-2, "{d:?}");
         // And the mode is the nominal one: f² ∝ storage, so within 0.1 %.
         let f_nominal = modes(&nominal).unwrap()[0].frequency_hz;
-        assert!((d.frequency_hz / f_nominal - 1.0).abs() < 1e-3, "{d:?} vs {f_nominal}");
+        assert!(
+            (d.frequency_hz / f_nominal - 1.0).abs() < 1e-3,
+            "{d:?} vs {f_nominal}"
+        );
     }
 }

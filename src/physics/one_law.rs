@@ -50,9 +50,7 @@ impl System {
             }
         }
         let targets = system.mode_targets();
-        let temperature = |stage: &RubberStage| {
-            point.temperature_c.unwrap_or(stage.temperature_c)
-        };
+        let temperature = |stage: &RubberStage| point.temperature_c.unwrap_or(stage.temperature_c);
         for (index, e) in system.elements.iter_mut().enumerate() {
             let ConnectionKind::Rubber(stage) = &model.connections[e.connection].kind else {
                 continue;
@@ -105,12 +103,17 @@ impl System {
         chain: MaxwellChain,
         temperature_c: Option<f64>,
     ) {
-        let Some(ConnectionKind::Rubber(stage)) = model.connections.get(connection).map(|c| &c.kind)
+        let Some(ConnectionKind::Rubber(stage)) =
+            model.connections.get(connection).map(|c| &c.kind)
         else {
             return;
         };
         let twist = self.static_twist_rad[connection].unwrap_or(0.0);
-        for e in self.elements.iter_mut().filter(|e| e.connection == connection) {
+        for e in self
+            .elements
+            .iter_mut()
+            .filter(|e| e.connection == connection)
+        {
             e.law = causal_law(
                 stage,
                 &chain,

@@ -51,7 +51,11 @@ pub fn law_band_hz(model: &Model) -> [f64; 2] {
         .chain(model.harmonics.iter().map(|h| h.order))
         .filter(|q| q.is_finite() && *q > 0.0);
     let (q_min, q_max) = orders.fold((f64::INFINITY, 0.0_f64), |(a, b), q| (a.min(q), b.max(q)));
-    let (q_min, q_max) = if q_max > 0.0 { (q_min, q_max) } else { (0.5, 12.0) };
+    let (q_min, q_max) = if q_max > 0.0 {
+        (q_min, q_max)
+    } else {
+        (0.5, 12.0)
+    };
     let lo = (0.25 * q_min * lo_rpm / 60.0).max(MIN_BAND_HZ);
     let hi = (1.5 * q_max * hi_rpm / 60.0).max(4.0 * lo);
     [lo, hi]
@@ -80,14 +84,16 @@ stiffness = 1.0e4
 
     #[test]
     fn the_band_spans_the_orders_over_the_speed_range() {
-        let text = format!(
-            "{BASE}\n[operation]\nspeed_range_rpm = [600, 2400]\norders = [0.5, 1, 6]\n"
-        );
+        let text =
+            format!("{BASE}\n[operation]\nspeed_range_rpm = [600, 2400]\norders = [0.5, 1, 6]\n");
         let model = parse_model(&text, "b.toml").unwrap();
         assert_eq!(law_speed_range_rpm(&model), [600.0, 2400.0]);
         // ¼·0.5·600/60 = 1.25 Hz; 1.5·6·2400/60 = 360 Hz.
         let [lo, hi] = law_band_hz(&model);
-        assert!((lo - 1.25).abs() < 1e-12 && (hi - 360.0).abs() < 1e-12, "{lo} {hi}");
+        assert!(
+            (lo - 1.25).abs() < 1e-12 && (hi - 360.0).abs() < 1e-12,
+            "{lo} {hi}"
+        );
     }
 
     #[test]

@@ -87,7 +87,11 @@ impl MaxwellChain {
     /// Fits the chain to `stage`'s α_f and ψ over `band_hz = [lo, hi]` (lo > 0) and at
     /// `modes`; what [`MaxwellChain::fit_at_modes`] does when it has not seen the stage,
     /// band and modes before.
-    pub(super) fn fit_uncached(stage: &RubberStage, band_hz: [f64; 2], modes: &[ModeTarget]) -> Self {
+    pub(super) fn fit_uncached(
+        stage: &RubberStage,
+        band_hz: [f64; 2],
+        modes: &[ModeTarget],
+    ) -> Self {
         let [lo, hi] = [band_hz[0].max(1e-3), band_hz[1].max(band_hz[0] * 1.01)];
         // The nominal loss factor at the stage's own temperature, ξ_T = ψ/2π·α_Tξ(T0)
         // (eq. 11, 15; a power law's tan(nπ/2) if larger): the chain meets the law there,
@@ -117,7 +121,11 @@ impl MaxwellChain {
         let rows: Vec<(f64, f64)> = log_space(lo, hi, n_samples)
             .into_iter()
             .map(|f| (f, 1.0))
-            .chain(modes.iter().map(|m| (m.frequency_hz, MODE_WEIGHT * m.energy_share)))
+            .chain(
+                modes
+                    .iter()
+                    .map(|m| (m.frequency_hz, MODE_WEIGHT * m.energy_share)),
+            )
             .collect();
         let n_cols = n_arms + 1;
         let mut a = DMatrix::<f64>::zeros(2 * rows.len() + 1, n_cols);
@@ -274,7 +282,11 @@ mod tests {
         s.psi = 0.2;
         let chain = MaxwellChain::fit(&s, [20.0, 200.0]);
         assert_eq!(chain.static_stiffness, 1.0);
-        assert!((chain.equilibrium - 1.0).abs() < 0.07, "{}", chain.equilibrium);
+        assert!(
+            (chain.equilibrium - 1.0).abs() < 0.07,
+            "{}",
+            chain.equilibrium
+        );
         assert!(
             chain.stiffness_error < 0.03,
             "stiffness error {}",

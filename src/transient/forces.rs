@@ -163,8 +163,9 @@ impl Plant {
         }
         if let Some(g) = &self.governor {
             let mean = self.engine.as_ref().map_or(0.0, |e| e.mean_torque_nm);
-            dy[n + g.dof] +=
-                -mean + g.total_inertia_kg_m2 * alpha - g.kp * y[n + g.dof] - g.ki * y[g.dof];
+            dy[n + g.dof] += -mean + g.dissipation_torque_nm + g.total_inertia_kg_m2 * alpha
+                - g.kp * y[n + g.dof]
+                - g.ki * y[g.dof];
         }
         for i in 0..n {
             dy[n + i] = dy[n + i] / mass[i] - alpha;

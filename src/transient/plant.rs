@@ -8,8 +8,8 @@
 
 use super::TransientError;
 use crate::model::{AmplitudeForm, ConnectionKind, GROUND, HarmonicAmplitude, Model, Poly};
-use crate::rubber::MaxwellChain;
 use crate::physics::{OperatingPoint, System, engine};
+use crate::rubber::MaxwellChain;
 
 /// Samples of the cylinder pressure table per working cycle (0.1° for a 4-stroke).
 const PRESSURE_SAMPLES: usize = 7200;
@@ -166,6 +166,11 @@ pub struct Governor {
     pub ki: f64,
     /// Total referred inertia of the driveline, kg·m².
     pub total_inertia_kg_m2: f64,
+    /// Mean torque the vibration takes from the engine at the start speed, N·m referred
+    /// (its dissipated power over the reference speed, from the linear periodic start,
+    /// [`super::periodic_start::add_periodic_state`]); the load gets the engine's mean
+    /// torque less this. Default 0 (the PI loop finds it, in seconds).
+    pub dissipation_torque_nm: f64,
 }
 
 /// Governor bandwidth, Hz.
@@ -382,6 +387,7 @@ impl Plant {
                     kp: 2.0 * w * total,
                     ki: w * w * total,
                     total_inertia_kg_m2: total,
+                    dissipation_torque_nm: 0.0,
                 }
             });
         Ok(Plant {
