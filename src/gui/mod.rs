@@ -34,6 +34,8 @@ mod tests_edit_cases;
 #[cfg(test)]
 mod tests_edit_structure;
 #[cfg(test)]
+mod tests_modal_damping;
+#[cfg(test)]
 mod tests_overwrite;
 #[cfg(test)]
 mod tests_plots;

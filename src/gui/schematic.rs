@@ -17,7 +17,7 @@ mod tree;
 use super::app::TorsimApp;
 use super::editor::fields::format_value as num;
 use egui::{Sense, Ui};
-use torsim::model::{ConnectionKind, Model, RubberStiffness};
+use torsim::model::{ConnectionKind, ModalDamping, Model, RubberStiffness};
 
 /// An element of the model chosen in the schematic or the editor.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -82,6 +82,28 @@ pub fn schematic_ui(app: &mut TorsimApp, ui: &mut Ui) {
                 response.on_hover_text_at_pointer(text);
             }
         });
+}
+
+/// The schematic's note of the model's modal damping (`[modal_damping]`), which belongs
+/// to no element: `modal ζ 2 %` for every mode, `modal ζ 2, 1.5 % (modes 1–2)` per mode.
+pub fn modal_label(model: &Model) -> Option<String> {
+    let percent = |z: f64| num(100.0 * z);
+    model.modal_damping.as_ref().map(|d| match d {
+        ModalDamping::All(z) => format!("modal ζ {} %", percent(*z)),
+        ModalDamping::PerMode(list) => format!(
+            "modal ζ {} % (mode{} 1{})",
+            list.iter()
+                .map(|z| percent(*z))
+                .collect::<Vec<_>>()
+                .join(", "),
+            if list.len() > 1 { "s" } else { "" },
+            if list.len() > 1 {
+                format!("–{}", list.len())
+            } else {
+                String::new()
+            }
+        ),
+    })
 }
 
 /// What the tooltip says about an element: its name and key values with units.

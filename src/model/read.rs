@@ -99,6 +99,7 @@ fn model(root: &Tab) -> Result<Model, ModelError> {
         "engine",
         "harmonic",
         "load",
+        "modal_damping",
         "operation",
         "expect",
     ])?;
@@ -133,6 +134,10 @@ fn model(root: &Tab) -> Result<Model, ModelError> {
             .map(harmonic)
             .collect::<Result<_, _>>()?,
         load: root.opt_table("load")?.map(|t| load(&t)).transpose()?,
+        modal_damping: root
+            .opt_table("modal_damping")?
+            .map(|t| super::modal_damping::read(&t))
+            .transpose()?,
         operation: match root.opt_table("operation")? {
             Some(t) => operation(&t)?,
             None => Operation::default(),

@@ -30,6 +30,8 @@ pub struct Model {
     pub harmonics: Vec<Harmonic>,
     /// What holds the mean speed (`[load]`), if written.
     pub load: Option<Load>,
+    /// Damping ratio per mode (`[modal_damping]`), if written.
+    pub modal_damping: Option<super::ModalDamping>,
     /// Speed ranges and orders (`[operation]`).
     pub operation: Operation,
     /// Checks run by `torsim check` (`[expect]`).

@@ -119,6 +119,9 @@ pub fn validate(model: &Model) -> Result<(), ModelError> {
         }
         non_negative("load.damping", load.damping_nm_s_per_rad)?;
     }
+    if let Some(d) = &model.modal_damping {
+        super::modal_damping::validate(d)?;
+    }
     validate_engine::operation_and_expect(model)
 }
 

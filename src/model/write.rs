@@ -42,6 +42,9 @@ pub fn to_toml_string(model: &Model) -> String {
         }
         opt_kv(&mut out, "damping", load.damping_nm_s_per_rad, 0.0);
     }
+    if let Some(d) = &model.modal_damping {
+        super::modal_damping::write(&mut out, d, num);
+    }
     operation(&mut out, &model.operation);
     expect(&mut out, &model.expect);
     out

@@ -31,13 +31,17 @@ pub fn stiffness_matrix(system: &super::System, frequency_hz: f64) -> DMatrix<f6
     k
 }
 
-/// Viscous damping matrix: absolute damping, shafts; rubber (hysteretic) not included.
+/// Viscous damping matrix: absolute damping, shafts, modal damping; rubber (hysteretic)
+/// not included.
 pub fn damping_matrix(system: &super::System) -> DMatrix<f64> {
     let mut c = DMatrix::<f64>::from_diagonal(&nalgebra::DVector::from_column_slice(
         &system.absolute_damping_nm_s_per_rad,
     ));
     for e in &system.elements {
         add_spring(&mut c, e.from_dof, e.to_dof, e.viscous_damping());
+    }
+    if let Some(m) = &system.modal_damping {
+        c += m;
     }
     c
 }
@@ -74,5 +78,10 @@ pub(crate) fn dynamic_stiffness_with(
     for (e, (k, loss)) in system.elements.iter().zip(element_stiffness) {
         let z = Complex64::new(k, k * loss + omega_rad_s * e.viscous_damping());
         add_spring(out, e.from_dof, e.to_dof, z);
+    }
+    if let Some(m) = &system.modal_damping {
+        for (o, c) in out.iter_mut().zip(m.iter()) {
+            *o += Complex64::new(0.0, omega_rad_s * c);
+        }
     }
 }

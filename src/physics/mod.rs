@@ -9,6 +9,7 @@ pub mod engine;
 pub mod error;
 pub mod excitation;
 pub mod matrices;
+pub mod modal_damping;
 mod one_law;
 pub mod static_twist;
 pub mod system;

@@ -66,6 +66,7 @@ impl System {
             );
             system.chains[e.connection] = Some(chain);
         }
+        system.apply_modal_damping(model);
         Ok(system)
     }
 

@@ -71,6 +71,9 @@ pub struct System {
     /// The causal chain each rubber stage is represented by, per connection (`None` for
     /// other connections, and for every connection of a [`System::nominal`]).
     pub chains: Vec<Option<MaxwellChain>>,
+    /// Modal damping matrix `C_m` (`[modal_damping]`, [`super::modal_damping`]) in referred
+    /// DOFs, N·m·s/rad; `None` without it. Part of C in every analysis.
+    pub modal_damping: Option<nalgebra::DMatrix<f64>>,
 }
 
 impl System {
@@ -255,6 +258,7 @@ impl System {
             load: point.load,
             warnings: Vec::new(),
             chains: vec![None; model.connections.len()],
+            modal_damping: None,
         };
 
         let mean_torques = static_connection_torques(model, &system)?;
@@ -286,6 +290,7 @@ impl System {
                 }
             }
         }
+        system.apply_modal_damping(model);
         Ok(system)
     }
 }

@@ -37,9 +37,13 @@ pub(crate) struct TreeSolver {
 }
 
 impl TreeSolver {
-    /// The solver for `system`, or `None` when its DOF graph has a loop. Parallel
-    /// elements between the same two DOFs share one edge.
+    /// The solver for `system`, or `None` when its DOF graph has a loop or its damping
+    /// matrix is full (modal damping couples every DOF). Parallel elements between the
+    /// same two DOFs share one edge.
     pub(crate) fn new(system: &System) -> Option<Self> {
+        if system.modal_damping.is_some() {
+            return None;
+        }
         let n = system.dof_count();
         let mut neighbours: Vec<Vec<usize>> = vec![Vec::new(); n];
         for e in &system.elements {

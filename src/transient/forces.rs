@@ -89,6 +89,12 @@ impl Plant {
         for i in 0..n {
             dy[n + i] = -self.damping_nm_s_per_rad[i] * y[n + i];
         }
+        // Modal damping (`[modal_damping]`): the full matrix C_m of the linear system.
+        if let Some(c) = &self.system.modal_damping {
+            for i in 0..n {
+                dy[n + i] -= (0..n).map(|j| c[(i, j)] * y[n + j]).sum::<f64>();
+            }
+        }
         for e in &self.elements {
             let s = self.element_state(e, y, Some(dy));
             if let Some(d) = e.from_dof {

@@ -65,6 +65,7 @@ pub fn model(inertias: Vec<Inertia>, connections: Vec<Connection>) -> Model {
         engine: None,
         harmonics: Vec::new(),
         load: None,
+        modal_damping: None,
         operation: Operation::default(),
         expect: Expect::default(),
     }

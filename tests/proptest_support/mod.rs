@@ -10,8 +10,8 @@
 use proptest::prelude::*;
 use torsim::model::{
     Connection, ConnectionKind, Engine, Gear, Harmonic, HarmonicAmplitude, Inertia, Load,
-    LoadPressure, Model, Operation, Poly, Pressure, PressureCurve, Regime, RubberElements,
-    RubberStage, RubberStiffness, Shaft, Thermal,
+    LoadPressure, ModalDamping, Model, Operation, Poly, Pressure, PressureCurve, Regime,
+    RubberElements, RubberStage, RubberStiffness, Shaft, Thermal,
 };
 use torsim::recording::{Channel, ChannelKind, Recording, RecordingMeta, RunKind};
 
@@ -246,7 +246,7 @@ fn operation() -> impl Strategy<Value = Operation> {
 
 /// A valid model: 2–8 inertias in a chain, each pair joined by a shaft, rubber stage or
 /// gear, optionally the last node to `ground` by a shaft or rubber stage; an engine,
-/// harmonics or both; `[load]` and `[operation]` sometimes.
+/// harmonics or both; `[load]`, `[modal_damping]` and `[operation]` sometimes.
 pub fn model() -> impl Strategy<Value = Model> {
     (2_usize..=8).prop_flat_map(|n| {
         (
@@ -262,6 +262,10 @@ pub fn model() -> impl Strategy<Value = Model> {
             prop::collection::vec(harmonic(), 0..3),
             prop::option::of((prop::option::of(0..n), prop::option::of(positive(-1, 2)))),
             operation(),
+            prop::option::of(prop_oneof![
+                (0.0..0.99_f64).prop_map(ModalDamping::All),
+                prop::collection::vec(0.0..0.99_f64, 1..4).prop_map(ModalDamping::PerMode),
+            ]),
         )
             .prop_map(assemble)
     })
@@ -277,10 +281,22 @@ type Parts = (
     Vec<(usize, Harmonic)>,
     Option<(Option<usize>, Option<f64>)>,
     Operation,
+    Option<ModalDamping>,
 );
 
 fn assemble(parts: Parts) -> Model {
-    let (name, description, nodes, links, ground, engine, harmonics, load, operation) = parts;
+    let (
+        name,
+        description,
+        nodes,
+        links,
+        ground,
+        engine,
+        harmonics,
+        load,
+        operation,
+        modal_damping,
+    ) = parts;
     // Names are made unique by their index; connection names likewise.
     let inertias: Vec<Inertia> = nodes
         .into_iter()
@@ -377,6 +393,7 @@ fn assemble(parts: Parts) -> Model {
         engine,
         harmonics,
         load,
+        modal_damping,
         operation,
         expect: Default::default(),
     }

@@ -12,6 +12,7 @@ mod expect;
 pub mod fields;
 mod inertias;
 mod load;
+mod modal_damping;
 mod operation;
 mod rubber;
 mod rubber_polys;
@@ -68,7 +69,7 @@ pub fn driveline_ui(app: &mut TorsimApp, ui: &mut Ui) {
                 );
                 cx.track(&r);
             });
-            let sections: [(&str, &[&str], Option<Selection>, bool); 6] = [
+            let sections: [(&str, &[&str], Option<Selection>, bool); 7] = [
                 (
                     "Inertias",
                     &["inertia"],
@@ -94,6 +95,7 @@ pub fn driveline_ui(app: &mut TorsimApp, ui: &mut Ui) {
                     app.selected.filter(|s| *s == Selection::Load),
                     false,
                 ),
+                ("Modal damping", &["modal_damping"], None, false),
                 ("Operation", &["operation"], None, false),
                 ("Checks (torsim check)", &["expect"], None, false),
             ];
@@ -118,7 +120,8 @@ pub fn driveline_ui(app: &mut TorsimApp, ui: &mut Ui) {
                         1 => connections::connections_ui(ui, &mut cx, &mut app.model),
                         2 => engine::engine_ui(ui, &mut cx, &mut app.model),
                         3 => load::load_ui(ui, &mut cx, &mut app.model),
-                        4 => operation::operation_ui(ui, &mut cx, &mut app.model),
+                        4 => modal_damping::modal_damping_ui(ui, &mut cx, &mut app.model),
+                        5 => operation::operation_ui(ui, &mut cx, &mut app.model),
                         _ => expect::expect_ui(ui, &mut cx, &mut app.model),
                     });
                 if let Some(m) = message {

@@ -83,6 +83,16 @@ pub fn paint(
     if let Some(r) = g.load {
         brake(p, pal.load, r);
     }
+    if let Some(text) = super::modal_label(model) {
+        let corner = p.clip_rect().right_top() + vec2(-6.0, 4.0);
+        p.text(
+            corner,
+            Align2::RIGHT_TOP,
+            text,
+            FontId::proportional(11.0),
+            pal.text,
+        );
+    }
     let font = FontId::proportional(11.0);
     let max_chars = ((g.column_pitch - 4.0) / 6.0).max(4.0) as usize;
     for (label, node) in g.labels.iter().zip(&model.inertias) {
