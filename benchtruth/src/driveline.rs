@@ -3,7 +3,7 @@
 //! the truth adds an [`crate::effects::Effect`]. Quantities follow model-format.md (SI,
 //! own-shaft values, gear ratio = speed of `to` / speed of `from`).
 
-use nalgebra::{DMatrix, SymmetricEigen};
+use nalgebra::{DMatrix, DVector, SymmetricEigen};
 
 /// A rotating mass.
 #[derive(Debug, Clone)]
@@ -147,6 +147,28 @@ impl Driveline {
             k[(c.to, c.to)] += s;
         }
         k
+    }
+
+    /// The static angle of every node (own shaft, rad) under the engine's mean torque
+    /// `t_mean` (N·m) with the load node held at zero: the linear static solution; all
+    /// zeros when it is singular.
+    pub fn static_angles(&self, t_mean: f64) -> Vec<f64> {
+        let k = self.stiffness_matrix(|_| 1.0);
+        let keep: Vec<usize> = (0..self.nodes.len())
+            .filter(|&i| i != self.load_node)
+            .collect();
+        let kr = DMatrix::from_fn(keep.len(), keep.len(), |r, c| k[(keep[r], keep[c])]);
+        let mut f = DVector::zeros(keep.len());
+        if let Some(p) = keep.iter().position(|&i| i == self.engine.node) {
+            f[p] = t_mean;
+        }
+        let mut x = vec![0.0; self.nodes.len()];
+        if let Some(sol) = kr.lu().solve(&f) {
+            for (r, &i) in keep.iter().enumerate() {
+                x[i] = sol[r];
+            }
+        }
+        x
     }
 
     /// Undamped modes (the rigid-body mode dropped).

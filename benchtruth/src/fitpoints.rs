@@ -14,7 +14,6 @@
 use crate::campaign::Campaign;
 use crate::driveline::{Driveline, Kind};
 use crate::plant::Band;
-use nalgebra::{DMatrix, DVector};
 
 /// Lowest order of the model's default excitation (four-stroke half orders).
 const ORDER_MIN: f64 = 0.5;
@@ -119,19 +118,7 @@ pub fn for_connection(all: &[(f64, Vec<f64>)], conn: usize) -> Vec<ModeShare> {
 /// at the connection's `to` side), the load node held: the linear static solution, whose
 /// torques on the bench's tree-shaped drivelines do not depend on the stiffnesses.
 pub fn static_torques(d: &Driveline, t_mean: f64) -> Vec<f64> {
-    let k = d.stiffness_matrix(|_| 1.0);
-    let keep: Vec<usize> = (0..d.nodes.len()).filter(|&i| i != d.load_node).collect();
-    let kr = DMatrix::from_fn(keep.len(), keep.len(), |r, c| k[(keep[r], keep[c])]);
-    let mut f = DVector::zeros(keep.len());
-    if let Some(p) = keep.iter().position(|&i| i == d.engine.node) {
-        f[p] = t_mean;
-    }
-    let mut x = vec![0.0; d.nodes.len()];
-    if let Some(sol) = kr.lu().solve(&f) {
-        for (r, &i) in keep.iter().enumerate() {
-            x[i] = sol[r];
-        }
-    }
+    let x = d.static_angles(t_mean);
     d.connections
         .iter()
         .map(|c| c.stiffness() * (c.lever() * x[c.from] - x[c.to]))

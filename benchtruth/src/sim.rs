@@ -5,7 +5,6 @@ use crate::draw::Case;
 use crate::driveline::Driveline;
 use crate::integrate::Rk4;
 use crate::plant::{Band, Plant, Profile};
-use nalgebra::{DMatrix, DVector};
 use std::f64::consts::TAU;
 
 /// The RK4 step: at most 1/40 of the shortest natural period (rubbers counted 4× stiffer
@@ -26,17 +25,8 @@ pub fn step_s(truth: &Driveline, plant: &Plant, sample_s: f64) -> f64 {
 
 /// Puts the static twist of the mean engine torque into `y` (load node held).
 fn static_twist(d: &Driveline, t_mean: f64, y: &mut [f64]) {
-    let k = d.stiffness_matrix(|_| 1.0);
-    let keep: Vec<usize> = (0..d.nodes.len()).filter(|&i| i != d.load_node).collect();
-    let kr = DMatrix::from_fn(keep.len(), keep.len(), |r, c| k[(keep[r], keep[c])]);
-    let mut f = DVector::zeros(keep.len());
-    if let Some(p) = keep.iter().position(|&i| i == d.engine.node) {
-        f[p] = t_mean;
-    }
-    if let Some(x) = kr.lu().solve(&f) {
-        for (r, &i) in keep.iter().enumerate() {
-            y[i] += x[r];
-        }
+    for (a, x) in y.iter_mut().zip(d.static_angles(t_mean)) {
+        *a += x;
     }
 }
 
