@@ -25,10 +25,7 @@ fn shaft(from: &str, to: &str, k: f64, c: f64) -> Connection {
         name: Connection::default_name(from, to),
         from: from.into(),
         to: to.into(),
-        kind: ConnectionKind::Shaft(Shaft {
-            stiffness_nm_per_rad: k,
-            damping_nm_s_per_rad: c,
-        }),
+        kind: ConnectionKind::Shaft(Shaft::massless(k, c)),
     }
 }
 

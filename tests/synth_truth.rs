@@ -152,10 +152,7 @@ fn hysteretic_damping_replaces_the_viscous_shaft() {
         .iter_mut()
         .find(|c| c.name == "coupling")
         .unwrap();
-    conn.kind = ConnectionKind::Shaft(Shaft {
-        stiffness_nm_per_rad: k,
-        damping_nm_s_per_rad: c,
-    });
+    conn.kind = ConnectionKind::Shaft(Shaft::massless(k, c));
     assert_eq!(t, user);
     // A damper the chain cannot match is refused with the most it can do: 65 N·m·s/rad
     // asks a loss factor 0.90 at 140 Hz, beyond ψ = 5 (ψ/2π = 0.80), the calibration's

@@ -64,10 +64,10 @@ pub(crate) fn branch_mode(model: &mut Model, spec: &EffectSpec) -> Result<Applie
         name: format!("{name}_spring"),
         from: host.clone(),
         to: name.clone(),
-        kind: ConnectionKind::Shaft(Shaft {
-            stiffness_nm_per_rad: j_b * omega * omega,
-            damping_nm_s_per_rad: 2.0 * zeta * j_b * omega,
-        }),
+        kind: ConnectionKind::Shaft(Shaft::massless(
+            j_b * omega * omega,
+            2.0 * zeta * j_b * omega,
+        )),
     });
     let summary = format!(
         "node `{host}` carries a branch `{name}` of {j_b:.4e} kg·m² ({:.1} % of its inertia, \

@@ -40,6 +40,8 @@ mod tests_overwrite;
 #[cfg(test)]
 mod tests_plots;
 #[cfg(test)]
+mod tests_shaft;
+#[cfg(test)]
 mod tests_traces;
 
 use crate::cli::error::CliError;

@@ -128,11 +128,23 @@ pub fn describe(model: &Model, sel: Selection, stations: &[String]) -> String {
             };
             let head = format!("{} ({}): {} - {}", c.name, c.kind.kind_str(), c.from, c.to);
             let body = match &c.kind {
-                ConnectionKind::Shaft(s) => format!(
-                    "k = {} N·m/rad\nc = {} N·m·s/rad",
-                    num(s.stiffness_nm_per_rad),
-                    num(s.damping_nm_s_per_rad)
-                ),
+                ConnectionKind::Shaft(s) => {
+                    let distributed = if s.inertia_kg_m2 > 0.0 {
+                        let segments =
+                            s.segments.map_or("automatic".to_string(), |n| n.to_string());
+                        format!(
+                            "\nJ = {} kg·m² distributed (exact element; {segments} segments)",
+                            num(s.inertia_kg_m2)
+                        )
+                    } else {
+                        String::new()
+                    };
+                    format!(
+                        "k = {} N·m/rad\nc = {} N·m·s/rad{distributed}",
+                        num(s.stiffness_nm_per_rad),
+                        num(s.damping_nm_s_per_rad)
+                    )
+                }
                 ConnectionKind::Rubber(r) => {
                     let k = match &r.stiffness {
                         RubberStiffness::Direct(k) => *k,

@@ -12,6 +12,10 @@
 //! When it does not converge, the eigenvalue of the 2n×2n state matrix
 //! `[[0, I], [−M⁻¹K, −M⁻¹C]]` nearest the mode (by `|λ|`) is taken from a full Schur
 //! decomposition instead — ~25 times the work, and what every mode cost before.
+//!
+//! A model with distributed shafts is solved on their lumped segments; its damping ratio
+//! is that eigenvalue's and its damped frequency `f·√(1 − ζ²)` on the exact undamped `f`
+//! ([`super::wittrick_williams`]), so the two tables never disagree by the lumping.
 
 use super::undamped::Mode;
 use crate::physics::{System, matrices};
@@ -51,6 +55,14 @@ pub fn damped_modes(system: &System, modes: &[Mode]) -> Vec<DampedMode> {
             let lambda = rayleigh_iteration(system, &k, &c, &mode.shape_dof, &mut lu)
                 .or_else(|| nearest_state_eigenvalue(system, &k, &c, omega));
             match lambda {
+                // Distributed shafts: ζ of the lumped segments, on the exact frequency.
+                Some(l) if l.norm() > 0.0 && !system.distributed.is_empty() => {
+                    let zeta = -l.re / l.norm();
+                    DampedMode {
+                        frequency_hz: f * (1.0 - zeta * zeta).max(0.0).sqrt(),
+                        damping_ratio: zeta,
+                    }
+                }
                 Some(l) if l.norm() > 0.0 => DampedMode {
                     frequency_hz: l.im / TAU,
                     damping_ratio: -l.re / l.norm(),

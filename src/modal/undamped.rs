@@ -85,8 +85,23 @@ fn to_hz(omega2: f64) -> f64 {
 }
 
 /// Undamped flexible modes of `system`, ascending in frequency, rubber stiffness at each
-/// mode's own frequency.
+/// mode's own frequency. A model with distributed shafts has its frequencies from the
+/// exact elements ([`super::wittrick_williams`]) and its shapes from their segments.
 pub fn modes(system: &System) -> Result<Vec<Mode>, PhysicsError> {
+    let mut found = lumped_modes(system)?;
+    if !system.distributed.is_empty() {
+        let guess: Vec<f64> = found.iter().map(|m| m.frequency_hz).collect();
+        let exact =
+            super::wittrick_williams::exact_frequencies_hz(system, system.rigid_body_modes, &guess);
+        for (mode, f) in found.iter_mut().zip(exact) {
+            mode.frequency_hz = f;
+        }
+    }
+    Ok(found)
+}
+
+/// The modes of the matrices as they stand (distributed shafts as their segments).
+fn lumped_modes(system: &System) -> Result<Vec<Mode>, PhysicsError> {
     let inv_sqrt_m: Vec<f64> = system
         .inertia_kg_m2
         .iter()

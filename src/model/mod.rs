@@ -31,5 +31,5 @@ pub use modal_damping::ModalDamping;
 pub use operation_types::*;
 pub use read::{parse_model, read_model_file};
 pub use types::*;
-pub use validate::validate;
+pub use validate::{MAX_SEGMENTS, validate};
 pub use write::{save_model_file, to_toml_string};

@@ -169,7 +169,10 @@ const POLYS: [&str; 4] = [
 fn connection(t: &Tab) -> Result<Connection, ModelError> {
     let kind_name = t.str("kind")?;
     let (extra, kind): (&[&str], _) = match kind_name.as_str() {
-        "shaft" => (&["stiffness", "damping"], shaft as fn(&Tab) -> _),
+        "shaft" => (
+            &["stiffness", "damping", "inertia", "segments"],
+            shaft as fn(&Tab) -> _,
+        ),
         "rubber" => (
             &[
                 "stiffness",
@@ -217,6 +220,8 @@ fn shaft(t: &Tab) -> Result<ConnectionKind, ModelError> {
     Ok(ConnectionKind::Shaft(Shaft {
         stiffness_nm_per_rad: t.f64("stiffness")?,
         damping_nm_s_per_rad: t.f64_or("damping", 0.0)?,
+        inertia_kg_m2: t.f64_or("inertia", 0.0)?,
+        segments: t.opt_u32("segments")?,
     }))
 }
 

@@ -136,6 +136,10 @@ fn connection(out: &mut String, c: &Connection) {
         ConnectionKind::Shaft(s) => {
             kv(out, "stiffness", num(s.stiffness_nm_per_rad));
             opt_kv(out, "damping", s.damping_nm_s_per_rad, 0.0);
+            opt_kv(out, "inertia", s.inertia_kg_m2, 0.0);
+            if let Some(n) = s.segments {
+                kv(out, "segments", n.to_string());
+            }
         }
         ConnectionKind::Rubber(r) => rubber(out, r),
         ConnectionKind::Gear(g) => {

@@ -13,6 +13,10 @@ pub enum ElementLaw {
         stiffness_nm_per_rad: f64,
         /// Referred viscous damping, N·m·s/rad.
         damping_nm_s_per_rad: f64,
+        /// Referred inertia of this segment of a distributed shaft, kg·m², lumped half at
+        /// each end DOF for the matrix analyses; the forced response adds the exact
+        /// element's difference ([`super::distributed`]). 0 for a massless shaft or mesh.
+        distributed_inertia_kg_m2: f64,
     },
     /// A rubber stage linearized at its static twist: `k(f) = k_base·α_f(f)`, hysteretic
     /// with loss factor `ξ_T` (seed 000 eq. 13, 15).
@@ -112,6 +116,17 @@ impl Element {
                     *elastic_nm_per_rad,
                 )
             }
+        }
+    }
+
+    /// Referred inertia of a distributed shaft's segment, kg·m² (0 for every other).
+    pub fn distributed_inertia(&self) -> f64 {
+        match &self.law {
+            ElementLaw::Linear {
+                distributed_inertia_kg_m2,
+                ..
+            } => *distributed_inertia_kg_m2,
+            _ => 0.0,
         }
     }
 

@@ -47,7 +47,7 @@ pub fn damping_matrix(system: &super::System) -> DMatrix<f64> {
 }
 
 /// Dynamic stiffness `K(f)(1 + iξ) − ω²M + iωC` at angular frequency `omega_rad_s`,
-/// written into `out` (n×n).
+/// written into `out` (n×n); a distributed shaft's segments as exact elements.
 pub fn dynamic_stiffness(system: &super::System, omega_rad_s: f64, out: &mut DMatrix<Complex64>) {
     let frequency_hz = omega_rad_s / std::f64::consts::TAU;
     dynamic_stiffness_with(
@@ -78,6 +78,17 @@ pub(crate) fn dynamic_stiffness_with(
     for (e, (k, loss)) in system.elements.iter().zip(element_stiffness) {
         let z = Complex64::new(k, k * loss + omega_rad_s * e.viscous_damping());
         add_spring(out, e.from_dof, e.to_dof, z);
+        let inertia = e.distributed_inertia();
+        if inertia > 0.0 {
+            super::distributed::add_exact_correction(
+                out,
+                e.from_dof,
+                e.to_dof,
+                z,
+                inertia,
+                omega_rad_s,
+            );
+        }
     }
     if let Some(m) = &system.modal_damping {
         for (o, c) in out.iter_mut().zip(m.iter()) {

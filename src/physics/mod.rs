@@ -1,9 +1,11 @@
 //! The linear driveline at an operating point: assembly of M, K(f) (complex; rubber as one
-//! causal chain, [`one_law`]), C, referred to the engine shaft through the gear tree
+//! causal chain, [`one_law`]; shafts with inertia as exact elements, [`distributed`]), C,
+//! referred to the engine shaft through the gear tree
 //! ([`system`]); the static
 //! twist of the rubber stages under the mean torque ([`static_twist`]); the engine torque
 //! of seed 001 eq. 3–5 and its harmonics per order ([`engine`], [`excitation`]).
 
+pub mod distributed;
 pub mod element;
 pub mod engine;
 pub mod error;
@@ -15,6 +17,7 @@ pub mod static_twist;
 pub mod system;
 mod topology;
 
+pub use distributed::DistributedShaft;
 pub use element::{Element, ElementLaw};
 pub use error::PhysicsError;
 pub use excitation::Excitation;

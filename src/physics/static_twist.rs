@@ -148,6 +148,7 @@ at = "c"
         system.elements[1].law = ElementLaw::Linear {
             stiffness_nm_per_rad: 0.0,
             damping_nm_s_per_rad: 0.0,
+            distributed_inertia_kg_m2: 0.0,
         };
         let e = static_connection_torques(&model, &system)
             .unwrap_err()

@@ -7,6 +7,7 @@
 //! degree of freedom; a gear with mesh stiffness `k_m` (given at the `to` side) is a spring
 //! `k_m·r_to²` between them.
 
+use super::distributed::{DistributedShaft, expand, lumped_valid_to_hz, segment_count};
 use super::element::{Element, ElementLaw, rubber_law};
 use super::error::PhysicsError;
 use super::excitation::{CylinderSpectrum, cylinder_spectrum};
@@ -74,6 +75,9 @@ pub struct System {
     /// Modal damping matrix `C_m` (`[modal_damping]`, [`super::modal_damping`]) in referred
     /// DOFs, N·m·s/rad; `None` without it. Part of C in every analysis.
     pub modal_damping: Option<nalgebra::DMatrix<f64>>,
+    /// Shafts with their own inertia ([`super::distributed`]): each is a chain of segment
+    /// elements whose internal DOFs follow the nodes' (no node maps to them).
+    pub distributed: Vec<DistributedShaft>,
 }
 
 impl System {
@@ -190,9 +194,40 @@ impl System {
 
         // Linear elements first (rubber at its linear static stiffness) for the static solve.
         let mut elements = Vec::new();
+        let mut distributed = Vec::new();
+        let mut warnings = Vec::new();
+        let band_top_hz = crate::rubber::law_band_hz(model)[1];
         for (j, c) in model.connections.iter().enumerate() {
             let (from_dof, to_dof) = (dof(&c.from), dof(&c.to));
             let (torque_ratio, law) = match &c.kind {
+                ConnectionKind::Shaft(s) if s.inertia_kg_m2 > 0.0 => {
+                    let segments = s.segments.map_or_else(
+                        || segment_count(s.stiffness_nm_per_rad, s.inertia_kg_m2, band_top_hz),
+                        |n| n as usize,
+                    );
+                    let valid_hz =
+                        lumped_valid_to_hz(s.stiffness_nm_per_rad, s.inertia_kg_m2, segments);
+                    if valid_hz < band_top_hz {
+                        warnings.push(format!(
+                            "shaft `{}`: its {segments} segments follow the exact element within \
+                             0.1 % up to {valid_hz:.1} Hz, below the band's {band_top_hz:.1} Hz; \
+                             natural frequencies and the forced response stay exact, damping ratios \
+                             and the time domain are lumped above (set `segments`)",
+                            c.name
+                        ));
+                    }
+                    distributed.push(expand(
+                        j,
+                        (from_dof, to_dof),
+                        shaft_ratio(c),
+                        s,
+                        segments,
+                        &mut inertia,
+                        &mut damping,
+                        &mut elements,
+                    ));
+                    continue;
+                }
                 ConnectionKind::Shaft(s) => {
                     let r = shaft_ratio(c);
                     (
@@ -200,6 +235,7 @@ impl System {
                         ElementLaw::Linear {
                             stiffness_nm_per_rad: s.stiffness_nm_per_rad * r * r,
                             damping_nm_s_per_rad: s.damping_nm_s_per_rad * r * r,
+                            distributed_inertia_kg_m2: 0.0,
                         },
                     )
                 }
@@ -212,6 +248,7 @@ impl System {
                         ElementLaw::Linear {
                             stiffness_nm_per_rad: state.stiffness_nm_per_rad * r * r,
                             damping_nm_s_per_rad: 0.0,
+                            distributed_inertia_kg_m2: 0.0,
                         },
                     )
                 }
@@ -224,6 +261,7 @@ impl System {
                             ElementLaw::Linear {
                                 stiffness_nm_per_rad: k * r * r,
                                 damping_nm_s_per_rad: 0.0,
+                                distributed_inertia_kg_m2: 0.0,
                             },
                         )
                     }
@@ -238,7 +276,7 @@ impl System {
             });
         }
 
-        let rigid_body_modes = free_components(n_dof, &elements);
+        let rigid_body_modes = free_components(inertia.len(), &elements);
         let mut system = System {
             node_names: model.inertias.iter().map(|n| n.name.clone()).collect(),
             speed_ratio: ratios,
@@ -256,14 +294,19 @@ impl System {
                 .as_ref()
                 .map(|e| cylinder_spectrum(e, point.load)),
             load: point.load,
-            warnings: Vec::new(),
+            warnings,
             chains: vec![None; model.connections.len()],
             modal_damping: None,
+            distributed,
         };
 
         let mean_torques = static_connection_torques(model, &system)?;
         for (e, torque) in system.elements.iter().zip(&mean_torques) {
             system.mean_torque_nm[e.connection] = Some(*torque);
+        }
+        let mut segments_of = vec![1; model.connections.len()];
+        for d in &system.distributed {
+            segments_of[d.connection] = d.segments();
         }
         // Rubber stages: tangent stiffness at the static twist (seed 000 eq. 1–2, 13).
         for e in &mut system.elements {
@@ -285,8 +328,10 @@ impl System {
                     system.static_twist_rad[e.connection] = Some(twist);
                 }
                 _ => {
+                    // A distributed shaft's segments each carry the torque: n × one's twist.
                     let (k, _) = e.stiffness_at(0.0);
-                    system.static_twist_rad[e.connection] = Some(torque / (k / r2));
+                    let segments = segments_of[e.connection] as f64;
+                    system.static_twist_rad[e.connection] = Some(segments * torque / (k / r2));
                 }
             }
         }

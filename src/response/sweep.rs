@@ -7,7 +7,7 @@
 use super::lu::LuWorkspace;
 use super::peak::PeakSynthesizer;
 use super::tree::TreeSolver;
-use crate::physics::{Excitation, PhysicsError, System, matrices};
+use crate::physics::{Excitation, PhysicsError, System, distributed, matrices};
 use nalgebra::DMatrix;
 use num_complex::Complex64;
 use std::f64::consts::{PI, TAU};
@@ -101,13 +101,18 @@ fn sweep(
     let orders = &excitation.orders;
     check_sizes(orders, speeds_rpm.len())?;
     let (n_nodes, n_orders, n_speeds) = (system.node_names.len(), orders.len(), speeds_rpm.len());
-    let n_conn = system.elements.len();
+    let n_elements = system.elements.len();
+    let (rows, row_of) = result_rows(system);
+    let n_conn = rows.len();
     let mut response = Response {
         speeds_rpm: speeds_rpm.to_vec(),
         orders: orders.clone(),
         ias_amplitude_rpm: vec![vec![vec![0.0; n_speeds]; n_orders]; n_nodes],
         ias_half_peak_to_peak_rpm: vec![vec![0.0; n_speeds]; n_nodes],
-        connections: system.elements.iter().map(|e| e.connection).collect(),
+        connections: rows
+            .iter()
+            .map(|&e| system.elements[e].connection)
+            .collect(),
         torque_amplitude_nm: vec![vec![vec![0.0; n_speeds]; n_orders]; n_conn],
         torque_peak_nm: vec![vec![0.0; n_speeds]; n_conn],
         power_loss_w: vec![vec![0.0; n_speeds]; n_conn],
@@ -119,10 +124,10 @@ fn sweep(
     // O(n) elimination for tree-shaped drivelines; the dense LU for loops and near-zero
     // pivots.
     let mut tree = TreeSolver::new(system);
-    let mut element_z = vec![Complex64::default(); n_conn];
+    let mut element_z = vec![Complex64::default(); n_elements];
     // (stiffness, loss factor) of each element at the current frequency, and its viscous
     // damping: evaluated once per (speed, order) for the matrix and the element results.
-    let mut stiffness = vec![(0.0, 0.0); n_conn];
+    let mut stiffness = vec![(0.0, 0.0); n_elements];
     let viscous: Vec<f64> = system
         .elements
         .iter()
@@ -181,24 +186,29 @@ fn sweep(
             }
             for (c, e) in system.elements.iter().enumerate() {
                 let (k, loss) = stiffness[c];
-                let c_visc = viscous[c];
-                let twist = e.from_dof.map_or(Complex64::default(), |d| angle[d])
-                    - e.to_dof.map_or(Complex64::default(), |d| angle[d]);
-                let torque_ref = element_z[c] * twist;
-                let torque_own = torque_ref / e.torque_ratio;
-                torques[c][q] = torque_own;
-                response.torque_amplitude_nm[c][q][s] = torque_own.norm_sqr().sqrt();
-                let energy_per_cycle = PI * twist.norm_sqr() * (k * loss + omega * c_visc);
-                response.power_loss_by_order_w[c][q][s] = energy_per_cycle * frequency_hz;
-                response.power_loss_w[c][s] += energy_per_cycle * frequency_hz;
+                let row = row_of[c];
+                let (torque_ref, energy_per_cycle) = element_torque_and_loss(
+                    e,
+                    element_z[c],
+                    k * loss + omega * viscous[c],
+                    omega,
+                    &angle,
+                );
+                if rows[row] == c {
+                    let torque_own = torque_ref / e.torque_ratio;
+                    torques[row][q] = torque_own;
+                    response.torque_amplitude_nm[row][q][s] = torque_own.norm_sqr().sqrt();
+                }
+                response.power_loss_by_order_w[row][q][s] += energy_per_cycle * frequency_hz;
+                response.power_loss_w[row][s] += energy_per_cycle * frequency_hz;
             }
         }
         if !synthesize {
             continue;
         }
-        for (c, e) in system.elements.iter().enumerate() {
-            let mean = system.mean_torque_nm[e.connection].unwrap_or(0.0);
-            response.torque_peak_nm[c][s] = synthesizer.peak_abs(mean, &torques[c]);
+        for (row, &e) in rows.iter().enumerate() {
+            let mean = system.mean_torque_nm[system.elements[e].connection].unwrap_or(0.0);
+            response.torque_peak_nm[row][s] = synthesizer.peak_abs(mean, &torques[row]);
         }
         // Nodes on one DOF share its phasors (scaled by |r|; a sign flips the whole wave).
         for (h, v) in half_pp.iter_mut().zip(&velocities) {
@@ -214,4 +224,51 @@ fn sweep(
         }
     }
     Ok(response)
+}
+
+/// The result rows: one per connection with elements, each row's element that gives its
+/// torque (a distributed shaft's first segment: the torque at its `from` end), and the row
+/// of every element (a distributed shaft's segments all add their loss to its row).
+fn result_rows(system: &System) -> (Vec<usize>, Vec<usize>) {
+    let mut rows = Vec::new();
+    let mut row_of: Vec<usize> = Vec::with_capacity(system.elements.len());
+    for i in 0..system.elements.len() {
+        let first_of_shaft = system
+            .distributed
+            .iter()
+            .find(|d| d.elements.contains(&i))
+            .map(|d| d.elements.start);
+        match first_of_shaft {
+            Some(first) if first != i => row_of.push(row_of[first]),
+            _ => {
+                row_of.push(rows.len());
+                rows.push(i);
+            }
+        }
+    }
+    (rows, row_of)
+}
+
+/// An element's referred torque at its `from` end and the energy it dissipates per cycle,
+/// J: `z·Δθ` and `π·|Δθ|²·im` for a spring of complex stiffness `z` (`im` its loss
+/// modulus, N·m/rad); a distributed shaft's segment exactly, `D_aa·θ_a + D_ab·θ_b` and
+/// `π·Im(θᴴ·D·θ)` ([`distributed::exact_ends`]).
+fn element_torque_and_loss(
+    e: &crate::physics::Element,
+    z: Complex64,
+    im: f64,
+    omega: f64,
+    angle: &[Complex64],
+) -> (Complex64, f64) {
+    let at = |d: Option<usize>| d.map_or(Complex64::default(), |d| angle[d]);
+    let (a, b) = (at(e.from_dof), at(e.to_dof));
+    let inertia = e.distributed_inertia();
+    if inertia > 0.0 {
+        let (aa, ab) = distributed::exact_ends(z, inertia, omega);
+        let cross = (a.conj() * b).re;
+        let loss = PI * (aa.im * (a.norm_sqr() + b.norm_sqr()) + 2.0 * ab.im * cross);
+        return (aa * a + ab * b, loss);
+    }
+    let twist = a - b;
+    (z * twist, PI * twist.norm_sqr() * im)
 }

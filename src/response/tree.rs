@@ -37,11 +37,12 @@ pub(crate) struct TreeSolver {
 }
 
 impl TreeSolver {
-    /// The solver for `system`, or `None` when its DOF graph has a loop or its damping
-    /// matrix is full (modal damping couples every DOF). Parallel elements between the
+    /// The solver for `system`, or `None` when its DOF graph has a loop, its damping
+    /// matrix is full (modal damping couples every DOF) or it has a distributed shaft
+    /// (whose exact element is no spring). Parallel elements between the
     /// same two DOFs share one edge.
     pub(crate) fn new(system: &System) -> Option<Self> {
-        if system.modal_damping.is_some() {
+        if system.modal_damping.is_some() || !system.distributed.is_empty() {
             return None;
         }
         let n = system.dof_count();

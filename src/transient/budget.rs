@@ -24,6 +24,19 @@ pub fn state_name(plant: &Plant, i: usize) -> String {
             .filter(|(_, x)| **x == d)
             .map(|(k, _)| plant.system.node_names[k].as_str())
             .collect();
+        if names.is_empty() {
+            // An internal DOF of a distributed shaft.
+            let sys = &plant.system;
+            let shaft = sys.distributed.iter().find(|s| {
+                s.elements
+                    .clone()
+                    .any(|e| sys.elements[e].from_dof == Some(d))
+            });
+            return shaft.map_or_else(
+                || format!("#{d}"),
+                |s| format!("inside shaft {}", sys.connection_names[s.connection]),
+            );
+        }
         names.join("+")
     };
     if i < n {

@@ -29,7 +29,7 @@
 
 use super::plant::{Plant, PlantLaw};
 use crate::model::Model;
-use crate::physics::{Excitation, System, matrices};
+use crate::physics::{ElementLaw, Excitation, System, matrices};
 use crate::response::lu::LuWorkspace;
 use nalgebra::DMatrix;
 use num_complex::Complex64;
@@ -163,6 +163,17 @@ const DASHPOT_TAU_S: f64 = 1e-9;
 /// time domain's own stiffness and loss.
 fn causal_copy(model: &Model, plant: &Plant) -> System {
     let mut system = plant.system.clone();
+    // The time domain integrates a distributed shaft's lumped segments, not its exact
+    // element: the start must be periodic for what is integrated.
+    for e in &mut system.elements {
+        if let ElementLaw::Linear {
+            distributed_inertia_kg_m2,
+            ..
+        } = &mut e.law
+        {
+            *distributed_inertia_kg_m2 = 0.0;
+        }
+    }
     for p in &plant.elements {
         if let PlantLaw::Rubber(r) = &p.law {
             let mut chain = r.chain.clone();

@@ -225,6 +225,12 @@ impl Plant {
         for (i, node) in model.inertias.iter().enumerate() {
             inertia[system.dof_of_node[i]] += node.inertia_kg_m2 * system.speed_ratio[i].powi(2);
         }
+        // Distributed shafts: half of each segment's inertia at each of its DOFs.
+        for e in &system.elements {
+            for d in [e.from_dof, e.to_dof].into_iter().flatten() {
+                inertia[d] += 0.5 * e.distributed_inertia();
+            }
+        }
         let damping = system.absolute_damping_nm_s_per_rad.clone();
         let dof_of = |name: &str| {
             (name != GROUND)
@@ -246,6 +252,22 @@ impl Plant {
                 ratio_of(&c.from)
             };
             let (ratio, law) = match &c.kind {
+                // A distributed shaft is its chain of segments (internal DOFs included).
+                ConnectionKind::Shaft(s) if s.inertia_kg_m2 > 0.0 => {
+                    for e in system.elements.iter().filter(|e| e.connection == j) {
+                        elements.push(PlantElement {
+                            connection: j,
+                            from_dof: e.from_dof,
+                            to_dof: e.to_dof,
+                            ratio: own,
+                            law: PlantLaw::Linear {
+                                stiffness: e.stiffness_at(0.0).0,
+                                damping: e.viscous_damping(),
+                            },
+                        });
+                    }
+                    continue;
+                }
                 ConnectionKind::Shaft(s) => (
                     own,
                     PlantLaw::Linear {
@@ -414,6 +436,23 @@ impl Plant {
 }
 
 impl Plant {
+    /// The output row of each element and whether it gives the row's torque: one row per
+    /// connection with elements, in element order; a distributed shaft's segments share
+    /// one row (torque at its `from` end, the power of all its segments).
+    pub fn output_rows(&self) -> Vec<(usize, bool)> {
+        let mut rows = Vec::with_capacity(self.elements.len());
+        let mut count = 0;
+        for (i, e) in self.elements.iter().enumerate() {
+            if i > 0 && self.elements[i - 1].connection == e.connection {
+                rows.push((count - 1, false));
+            } else {
+                rows.push((count, true));
+                count += 1;
+            }
+        }
+        rows
+    }
+
     /// Start temperature of the rubber stage of connection `connection`, °C.
     pub fn system_temperature(&self, connection: usize) -> f64 {
         self.start_temperature_c

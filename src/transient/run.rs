@@ -228,7 +228,7 @@ pub fn simulate_observed(
     let t_end = t0 + duration_s;
     let mut last_report = 0.0;
     // Instantaneous power per element of the samples not yet reported, W.
-    let mut power = vec![Vec::new(); plant.elements.len()];
+    let mut power = vec![Vec::new(); sim.torque_nm.len()];
     let mut reported = 0;
     while next < samples {
         {
@@ -410,9 +410,17 @@ fn empty_simulation(plant: &Plant, samples: usize, settling: Settling) -> Simula
         torque_nm: plant
             .elements
             .iter()
-            .map(|e| (e.connection, vec![0.0; samples]))
+            .zip(plant.output_rows())
+            .filter(|(_, (_, first))| *first)
+            .map(|(e, _)| (e.connection, vec![0.0; samples]))
             .collect(),
-        power_loss_w: plant.elements.iter().map(|e| (e.connection, 0.0)).collect(),
+        power_loss_w: plant
+            .elements
+            .iter()
+            .zip(plant.output_rows())
+            .filter(|(_, (_, first))| *first)
+            .map(|(e, _)| (e.connection, 0.0))
+            .collect(),
         temperature_c: thermal.collect(),
         connection_names: sys.connection_names.clone(),
         chains: plant
@@ -452,14 +460,15 @@ fn record(
         sim.speed_rpm[node][k] = ratio.abs() * (big_omega + y[n + dof]) * 60.0 / TAU;
     }
     let samples = sim.time_s.len() as f64;
-    let outputs = sim.torque_nm.iter_mut().zip(sim.power_loss_w.iter_mut());
-    for ((e, ((_, torque), (_, power))), now) in
-        plant.elements.iter().zip(outputs).zip(power_now.iter_mut())
-    {
+    for (e, (row, first)) in plant.elements.iter().zip(plant.output_rows()) {
         let state = plant.element_state(e, y, None);
-        torque[k] = state.torque_ref_nm / e.ratio;
-        *power += state.power_w / samples;
-        now.push(state.power_w);
+        if first {
+            sim.torque_nm[row].1[k] = state.torque_ref_nm / e.ratio;
+            power_now[row].push(state.power_w);
+        } else if let Some(last) = power_now[row].last_mut() {
+            *last += state.power_w;
+        }
+        sim.power_loss_w[row].1 += state.power_w / samples;
     }
     let mut thermal = sim.temperature_c.iter_mut();
     for e in &plant.elements {

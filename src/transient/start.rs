@@ -27,12 +27,15 @@ pub fn initial_state(plant: &Plant) -> Result<Vec<f64>, TransientError> {
         for e in &plant.elements {
             let linear = sys.elements.iter().find(|s| s.connection == e.connection);
             let secant_ref = match (
+                &e.law,
                 sys.mean_torque_nm[e.connection],
                 sys.static_twist_rad[e.connection],
                 linear,
             ) {
-                (Some(t), Some(twist), _) if twist != 0.0 => t / twist * e.ratio * e.ratio,
-                (_, _, Some(s)) => s.stiffness_at(0.0).0,
+                // A linear element is its own stiffness (a distributed shaft's segment too).
+                (PlantLaw::Linear { stiffness, .. }, ..) => *stiffness,
+                (_, Some(t), Some(twist), _) if twist != 0.0 => t / twist * e.ratio * e.ratio,
+                (_, _, _, Some(s)) => s.stiffness_at(0.0).0,
                 _ => 0.0,
             };
             add_spring(&mut k, e.from_dof, e.to_dof, secant_ref);

@@ -100,12 +100,20 @@ fn rubber() -> impl Strategy<Value = RubberStage> {
 }
 
 fn connection_kind() -> impl Strategy<Value = ConnectionKind> {
-    let shaft = (positive(2, 8), prop::option::of(positive(-3, 2))).prop_map(|(k, c)| {
-        ConnectionKind::Shaft(Shaft {
-            stiffness_nm_per_rad: k,
-            damping_nm_s_per_rad: c.unwrap_or(0.0),
-        })
-    });
+    // Some shafts carry their own distributed inertia, some with their segments given.
+    let shaft = (
+        positive(2, 8),
+        prop::option::of(positive(-3, 2)),
+        prop::option::weighted(0.3, positive(-3, 1)),
+        prop::option::of(1u32..40),
+    )
+        .prop_map(|(k, c, inertia, segments)| {
+            ConnectionKind::Shaft(Shaft {
+                inertia_kg_m2: inertia.unwrap_or(0.0),
+                segments: inertia.and(segments),
+                ..Shaft::massless(k, c.unwrap_or(0.0))
+            })
+        });
     let gear = (
         positive(-1, 0),
         any::<bool>(),

@@ -91,10 +91,7 @@ pub fn add_ui(ui: &mut Ui, cx: &mut EditCtx, model: &mut Model) {
             .on_disabled_hover_text("choose two different ends");
         if add.clicked() {
             let kind = match form.kind {
-                0 => ConnectionKind::Shaft(Shaft {
-                    stiffness_nm_per_rad: typical_shaft_stiffness(model),
-                    damping_nm_s_per_rad: 0.0,
-                }),
+                0 => ConnectionKind::Shaft(Shaft::massless(typical_shaft_stiffness(model), 0.0)),
                 1 => ConnectionKind::Rubber(RubberStage {
                     stiffness: RubberStiffness::Direct(1e4),
                     psi: 1.0,

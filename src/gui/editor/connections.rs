@@ -1,10 +1,10 @@
-//! Connections of every kind: name, ends, and the kind's values (shaft: stiffness and
-//! damping; rubber: see [`super::rubber`]; gear: ratio, mesh stiffness, backlash); add a
+//! Connections of every kind: name, ends, and the kind's values (shaft: see
+//! [`super::shaft`]; rubber: see [`super::rubber`]; gear: ratio, mesh stiffness, backlash); add a
 //! connection of a chosen kind between two chosen nodes; remove.
 
 use super::fields::{self, EditCtx, end_row};
 use super::widgets;
-use super::{element_frame, rubber};
+use super::{element_frame, rubber, shaft};
 use crate::gui::schematic::Selection;
 use egui::{CollapsingHeader, Ui};
 use torsim::model::{ConnectionKind, Gear, Model};
@@ -105,30 +105,7 @@ fn body_ui(ui: &mut Ui, cx: &mut EditCtx, model: &mut Model, j: usize) -> bool {
             widgets::node_combo(ui, cx, &k("to"), &format!("to {name}"), &mut c.to, true);
             end_row(ui, cx);
             match &mut c.kind {
-                ConnectionKind::Shaft(s) => {
-                    ui.label("stiffness");
-                    widgets::number(
-                        ui,
-                        cx,
-                        &k("stiffness"),
-                        &format!("stiffness {name}"),
-                        &mut s.stiffness_nm_per_rad,
-                        "N·m/rad",
-                        1e4,
-                    );
-                    end_row(ui, cx);
-                    ui.label("damping");
-                    widgets::number(
-                        ui,
-                        cx,
-                        &k("damping"),
-                        &format!("damping {name}"),
-                        &mut s.damping_nm_s_per_rad,
-                        "N·m·s/rad",
-                        1.0,
-                    );
-                    end_row(ui, cx);
-                }
+                ConnectionKind::Shaft(s) => shaft::shaft_ui(ui, cx, &key, &name, s),
                 ConnectionKind::Rubber(r) => rubber::rubber_ui(ui, cx, &key, &name, r),
                 ConnectionKind::Gear(g) => gear_ui(ui, cx, &key, &name, g),
             }

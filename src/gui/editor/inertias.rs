@@ -187,10 +187,10 @@ fn add_ui(ui: &mut Ui, cx: &mut EditCtx, model: &mut Model) {
             ),
             from,
             to: name,
-            kind: ConnectionKind::Shaft(Shaft {
-                stiffness_nm_per_rad: super::add_connection::typical_shaft_stiffness(model),
-                damping_nm_s_per_rad: 0.0,
-            }),
+            kind: ConnectionKind::Shaft(Shaft::massless(
+                super::add_connection::typical_shaft_stiffness(model),
+                0.0,
+            )),
         });
     }
     cx.select = Some(Some(Selection::Inertia(model.inertias.len() - 1)));

@@ -16,6 +16,7 @@ mod modal_damping;
 mod operation;
 mod rubber;
 mod rubber_polys;
+mod shaft;
 mod widgets;
 
 use super::app::TorsimApp;

@@ -100,20 +100,24 @@ pub fn animation_ui(
     };
     let text = ui.visuals().text_color();
     let weak = ui.visuals().weak_text_color();
-    let largest = shares
+    let drawn = springs(system, shares);
+    let largest = drawn
         .iter()
-        .copied()
+        .map(|s| s.share)
         .fold(0.0, f64::max)
         .max(f64::MIN_POSITIVE);
-    for (n, (e, &share)) in system.elements.iter().zip(shares).enumerate() {
+    for (n, spring_at) in drawn.into_iter().enumerate() {
+        let Spring {
+            from_dof,
+            to_dof,
+            connection,
+            share,
+            zigzag,
+        } = spring_at;
         // Labels of neighbouring springs at two heights, so long names do not overlap.
         let stagger = if n.is_multiple_of(2) { 0.0 } else { -26.0 };
         let stroke = Stroke::new(1.5 + 4.0 * share as f32, heat(share / largest));
-        let zigzag = matches!(e.law, ElementLaw::Rubber { .. } | ElementLaw::Causal { .. });
-        let ends = (
-            e.from_dof.and_then(node_of_dof),
-            e.to_dof.and_then(node_of_dof),
-        );
+        let ends = (from_dof.and_then(node_of_dof), to_dof.and_then(node_of_dof));
         let (a, b, label_at) = match ends {
             (Some((pa, ka)), Some((pb, kb))) => {
                 let (a, b) = (centre(pa), centre(pb));
@@ -143,7 +147,7 @@ pub fn animation_ui(
         if share >= 0.005 {
             let name = system
                 .connection_names
-                .get(e.connection)
+                .get(connection)
                 .map_or("", String::as_str);
             painter.text(
                 label_at,
@@ -191,4 +195,42 @@ pub fn animation_ui(
             text,
         );
     }
+}
+
+/// A spring as drawn: a distributed shaft once between its end nodes with the strain
+/// energy of all its segments, every other element as it is.
+struct Spring {
+    from_dof: Option<usize>,
+    to_dof: Option<usize>,
+    connection: usize,
+    share: f64,
+    zigzag: bool,
+}
+
+fn springs(system: &System, shares: &[f64]) -> Vec<Spring> {
+    let mut out: Vec<Spring> = Vec::new();
+    for (i, (e, &share)) in system.elements.iter().zip(shares).enumerate() {
+        match system.distributed.iter().find(|d| d.elements.contains(&i)) {
+            Some(d) if d.elements.start != i => {
+                if let Some(last) = out.last_mut() {
+                    last.share += share;
+                }
+            }
+            Some(d) => out.push(Spring {
+                from_dof: d.from_dof,
+                to_dof: d.to_dof,
+                connection: d.connection,
+                share,
+                zigzag: false,
+            }),
+            None => out.push(Spring {
+                from_dof: e.from_dof,
+                to_dof: e.to_dof,
+                connection: e.connection,
+                share,
+                zigzag: matches!(e.law, ElementLaw::Rubber { .. } | ElementLaw::Causal { .. }),
+            }),
+        }
+    }
+    out
 }

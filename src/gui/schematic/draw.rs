@@ -192,6 +192,12 @@ fn link_ui(p: &Painter, pal: &Palette, model: &Model, link: &LinkShape) {
         p.line_segment([s.right_center(), end], line);
     }
     match &c.kind {
+        // A shaft with its own inertia: a solid bar, the mass along it, over the spring.
+        ConnectionKind::Shaft(shaft) if shaft.inertia_kg_m2 > 0.0 => {
+            let bar = egui::Rect::from_center_size(s.center(), vec2(s.width(), 0.45 * s.height()));
+            p.rect_filled(bar, 2.0, color.gamma_multiply(0.35));
+            spring(p, s, Stroke::new(1.5, color));
+        }
         ConnectionKind::Shaft(_) => spring(p, s, Stroke::new(1.5, color)),
         ConnectionKind::Rubber(r) => {
             p.rect_filled(s, 4.0, color.gamma_multiply(0.85));
