@@ -42,10 +42,12 @@ damping = 1.5
 at = "engine"
 order = 1.0
 amplitude = 100.0
+phase_deg = 0.0
 [[harmonic]]
 at = "engine"
 order = 2.0
 amplitude = 40.0
+phase_deg = 0.0
 "#;
 
 fn runs(c: &mut Criterion) {

@@ -39,7 +39,8 @@ pub struct SimulateArgs {
     /// Relative tolerance of the integrator.
     #[arg(long, default_value_t = 1e-5)]
     pub rtol: f64,
-    /// Integrator: auto (Dormand–Prince unless the model is stiff), explicit or implicit (ROS2).
+    /// Integrator: auto (exact for steady runs of linear models, else Dormand–Prince unless
+    /// the model is stiff), explicit, implicit (ROS2) or exact.
     #[arg(long, value_enum, default_value_t = MethodArg::Auto)]
     pub method: MethodArg,
     /// Write the run as a recording (CSV and its .toml sidecar).
@@ -59,6 +60,8 @@ pub enum MethodArg {
     Explicit,
     /// ROS2, linearly implicit.
     Implicit,
+    /// Exact discretization (steady runs of linear models without an engine).
+    Exact,
 }
 
 /// What to run, from the options.
@@ -104,6 +107,7 @@ pub fn run(a: &SimulateArgs) -> Result<(), CliError> {
         MethodArg::Auto => Method::Auto,
         MethodArg::Explicit => Method::Explicit,
         MethodArg::Implicit => Method::Implicit,
+        MethodArg::Exact => Method::Exact,
     };
     let options = RunOptions {
         load: check_load(a.load)?,

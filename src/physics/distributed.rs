@@ -63,22 +63,48 @@ impl DistributedShaft {
     }
 }
 
-/// Expands a shaft with inertia into `segments` springs along new internal DOFs appended
-/// to `inertia`/`damping` (referred), pushing its elements; `ratio` is the |speed ratio|
-/// of its own shaft. Returns the shaft as [`super::System::distributed`] keeps it.
-#[allow(clippy::too_many_arguments)]
+/// What [`expand`] adds to: the referred inertia and damping per DOF, the elements, and
+/// the warnings for a person.
+pub(super) struct Assembly<'a> {
+    pub inertia: &'a mut Vec<f64>,
+    pub damping: &'a mut Vec<f64>,
+    pub elements: &'a mut Vec<super::Element>,
+    pub warnings: &'a mut Vec<String>,
+}
+
+/// Expands shaft `(connection index, name, shaft)` with inertia into its segments (given,
+/// or [`segment_count`] for `band_top_hz`) along new internal DOFs appended to the
+/// assembly; `ends` are its DOFs and the |speed ratio| of its own shaft. Warns when the
+/// segments fall short of the band. Returns the shaft as [`super::System::distributed`]
+/// keeps it.
 pub(super) fn expand(
-    connection: usize,
-    ends: (Option<usize>, Option<usize>),
-    ratio: f64,
-    shaft: &crate::model::Shaft,
-    segments: usize,
-    inertia: &mut Vec<f64>,
-    damping: &mut Vec<f64>,
-    elements: &mut Vec<super::Element>,
+    (connection, name, shaft): (usize, &str, &crate::model::Shaft),
+    (from_dof, to_dof, ratio): (Option<usize>, Option<usize>, f64),
+    band_top_hz: f64,
+    into: Assembly<'_>,
 ) -> DistributedShaft {
+    let (k_own, j_own) = (shaft.stiffness_nm_per_rad, shaft.inertia_kg_m2);
+    let n = shaft
+        .segments
+        .map_or_else(|| segment_count(k_own, j_own, band_top_hz), |n| n as usize)
+        .max(1);
+    let valid_hz = lumped_valid_to_hz(k_own, j_own, n);
+    if valid_hz < band_top_hz {
+        into.warnings.push(format!(
+            "shaft `{name}`: its {n} segments follow the exact element within 0.1 % up to \
+             {valid_hz:.1} Hz, below the band's {band_top_hz:.1} Hz; natural frequencies and \
+             the forced response stay exact, damping ratios and the time domain are lumped \
+             above (set `segments`)"
+        ));
+    }
+    let Assembly {
+        inertia,
+        damping,
+        elements,
+        ..
+    } = into;
+    let ends = (from_dof, to_dof);
     let r2 = ratio * ratio;
-    let n = segments.max(1);
     let (k, c, j) = (
         shaft.stiffness_nm_per_rad * r2,
         shaft.damping_nm_s_per_rad * r2,

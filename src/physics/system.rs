@@ -7,7 +7,7 @@
 //! degree of freedom; a gear with mesh stiffness `k_m` (given at the `to` side) is a spring
 //! `k_m·r_to²` between them.
 
-use super::distributed::{DistributedShaft, expand, lumped_valid_to_hz, segment_count};
+use super::distributed::{Assembly, DistributedShaft, expand};
 use super::element::{Element, ElementLaw, rubber_law};
 use super::error::PhysicsError;
 use super::excitation::{CylinderSpectrum, cylinder_spectrum};
@@ -201,31 +201,15 @@ impl System {
             let (from_dof, to_dof) = (dof(&c.from), dof(&c.to));
             let (torque_ratio, law) = match &c.kind {
                 ConnectionKind::Shaft(s) if s.inertia_kg_m2 > 0.0 => {
-                    let segments = s.segments.map_or_else(
-                        || segment_count(s.stiffness_nm_per_rad, s.inertia_kg_m2, band_top_hz),
-                        |n| n as usize,
-                    );
-                    let valid_hz =
-                        lumped_valid_to_hz(s.stiffness_nm_per_rad, s.inertia_kg_m2, segments);
-                    if valid_hz < band_top_hz {
-                        warnings.push(format!(
-                            "shaft `{}`: its {segments} segments follow the exact element within \
-                             0.1 % up to {valid_hz:.1} Hz, below the band's {band_top_hz:.1} Hz; \
-                             natural frequencies and the forced response stay exact, damping ratios \
-                             and the time domain are lumped above (set `segments`)",
-                            c.name
-                        ));
-                    }
-                    distributed.push(expand(
-                        j,
-                        (from_dof, to_dof),
-                        shaft_ratio(c),
-                        s,
-                        segments,
-                        &mut inertia,
-                        &mut damping,
-                        &mut elements,
-                    ));
+                    let into = Assembly {
+                        inertia: &mut inertia,
+                        damping: &mut damping,
+                        elements: &mut elements,
+                        warnings: &mut warnings,
+                    };
+                    let shaft = (j, c.name.as_str(), s);
+                    let ends = (from_dof, to_dof, shaft_ratio(c));
+                    distributed.push(expand(shaft, ends, band_top_hz, into));
                     continue;
                 }
                 ConnectionKind::Shaft(s) => {

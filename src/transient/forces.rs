@@ -6,8 +6,7 @@
 
 use super::plant::{Plant, PlantElement, PlantLaw, RubberPlant, Temperature};
 use super::speed::SpeedProfile;
-use crate::model::{AmplitudeForm, HarmonicAmplitude};
-use crate::physics::excitation::interpolate_held;
+use crate::model::AmplitudeForm;
 use std::f64::consts::TAU;
 
 /// What one element does at one state: referred torque and dissipated power.
@@ -158,13 +157,7 @@ impl Plant {
         let crank = phi_m + y[self.reference_dof];
         let speed_rpm = big_omega * 60.0 / TAU;
         for h in &self.harmonics {
-            let amplitude = match &h.amplitude {
-                HarmonicAmplitude::Constant(a) => *a,
-                HarmonicAmplitude::BySpeed {
-                    speed_rpm: rpm,
-                    amplitude_nm,
-                } => interpolate_held(rpm, amplitude_nm, speed_rpm),
-            };
+            let amplitude = h.amplitude_nm(speed_rpm);
             dy[n + h.dof] += h.ratio * amplitude * (h.order * crank + h.phase_rad).cos();
         }
         if let Some(g) = &self.governor {

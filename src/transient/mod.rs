@@ -15,6 +15,7 @@
 pub mod budget;
 pub mod dopri;
 mod error;
+pub mod exact;
 mod export;
 pub mod forces;
 pub mod observe;

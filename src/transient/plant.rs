@@ -152,6 +152,19 @@ pub struct HarmonicPlant {
     pub amplitude: HarmonicAmplitude,
 }
 
+impl HarmonicPlant {
+    /// Its amplitude at mean speed `speed_rpm` (held beyond a `BySpeed` table's ends), N·m.
+    pub fn amplitude_nm(&self, speed_rpm: f64) -> f64 {
+        match &self.amplitude {
+            HarmonicAmplitude::Constant(a) => *a,
+            HarmonicAmplitude::BySpeed {
+                speed_rpm: rpm,
+                amplitude_nm,
+            } => crate::physics::excitation::interpolate_held(rpm, amplitude_nm, speed_rpm),
+        }
+    }
+}
+
 /// The brake or generator that holds the mean speed of a driveline not tied to ground: it
 /// takes the engine's mean torque (less what accelerates the driveline in a ramp) and
 /// corrects slow drift like a speed governor — a critically damped PI loop at 0.5 Hz, far
@@ -201,6 +214,10 @@ pub struct Plant {
     pub system: System,
     /// Start temperature of each connection that is a rubber stage, °C.
     pub start_temperature_c: Vec<Option<f64>>,
+    /// The output row of each element and whether it gives the row's torque: one row per
+    /// connection with elements, in element order; a distributed shaft's segments share
+    /// one row (torque at its `from` end, the power of all its segments).
+    pub output_rows: Vec<(usize, bool)>,
 }
 
 impl Plant {
@@ -412,7 +429,9 @@ impl Plant {
                     dissipation_torque_nm: 0.0,
                 }
             });
+        let output_rows = output_rows(&elements);
         Ok(Plant {
+            output_rows,
             n_dof: n,
             inertia_kg_m2: inertia,
             damping_nm_s_per_rad: damping,
@@ -487,4 +506,19 @@ impl Plant {
             .fold(0.0, f64::max);
         modes.max(arms)
     }
+}
+
+/// [`Plant::output_rows`] of `elements` (a distributed shaft's segments are consecutive).
+fn output_rows(elements: &[PlantElement]) -> Vec<(usize, bool)> {
+    let mut rows = Vec::with_capacity(elements.len());
+    let mut count = 0;
+    for (i, e) in elements.iter().enumerate() {
+        if i > 0 && elements[i - 1].connection == e.connection {
+            rows.push((count - 1, false));
+        } else {
+            rows.push((count, true));
+            count += 1;
+        }
+    }
+    rows
 }

@@ -5,6 +5,7 @@
 use super::TransientError;
 use super::budget::{StepBudget, bound_thermal_time_constants, name_collapse, state_name};
 use super::dopri::Dopri5;
+use super::exact::Exact;
 use super::observe::{Event, take_chunk};
 use super::periodic_start::add_periodic_state;
 use super::plant::{Plant, PlantLaw, Temperature};
@@ -164,15 +165,34 @@ pub fn simulate_observed(
             .unwrap_or(crate::limits::current().step_budget_factor),
         h_max_s: h_max,
     };
+    // The exact discretization steps a whole fraction of the sample interval, at most h_max.
+    let sample_s = 1.0 / options.rate_hz;
+    let exact = match (options.method, run.is_ramp()) {
+        (Method::Auto | Method::Exact, false) => {
+            let h = sample_s / (sample_s / h_max).ceil().max(1.0);
+            Exact::new(&plant, from_rpm, y0.clone(), h)
+        }
+        _ => None,
+    };
+    if options.method == Method::Exact && exact.is_none() {
+        return Err(TransientError::Model(
+            "the exact integrator takes steady runs of models without an engine whose \
+             equations are linear (no backlash, amplitude law or self-heating); use \
+             `--method auto`"
+                .into(),
+        ));
+    }
     let mut solver = {
         let mut rhs =
             |t: f64, y: &[f64], dy: &mut [f64]| plant.derivatives(t, y, dy, &profile, &mut mass);
         let implicit = match options.method {
             Method::Implicit => true,
-            Method::Explicit => false,
+            Method::Explicit | Method::Exact => false,
             Method::Auto => is_stiff(plant.fastest_rate_rad_s(), h_max),
         };
-        if implicit {
+        if let Some(exact) = exact {
+            Stepper::Exact(Box::new(exact))
+        } else if implicit {
             Stepper::Implicit(Ros2::new(
                 0.0,
                 y0,
@@ -410,14 +430,14 @@ fn empty_simulation(plant: &Plant, samples: usize, settling: Settling) -> Simula
         torque_nm: plant
             .elements
             .iter()
-            .zip(plant.output_rows())
+            .zip(plant.output_rows.iter().copied())
             .filter(|(_, (_, first))| *first)
             .map(|(e, _)| (e.connection, vec![0.0; samples]))
             .collect(),
         power_loss_w: plant
             .elements
             .iter()
-            .zip(plant.output_rows())
+            .zip(plant.output_rows.iter().copied())
             .filter(|(_, (_, first))| *first)
             .map(|(e, _)| (e.connection, 0.0))
             .collect(),
@@ -460,7 +480,7 @@ fn record(
         sim.speed_rpm[node][k] = ratio.abs() * (big_omega + y[n + dof]) * 60.0 / TAU;
     }
     let samples = sim.time_s.len() as f64;
-    for (e, (row, first)) in plant.elements.iter().zip(plant.output_rows()) {
+    for (e, (row, first)) in plant.elements.iter().zip(plant.output_rows.iter().copied()) {
         let state = plant.element_state(e, y, None);
         if first {
             sim.torque_nm[row].1[k] = state.torque_ref_nm / e.ratio;

@@ -1,15 +1,21 @@
-//! The integrator a run uses: Dormand–Prince for ordinary models, ROS2 for stiff ones.
+//! The integrator a run uses: the exact discretization for linear models in steady runs
+//! ([`super::exact`]), Dormand–Prince for ordinary models, ROS2 for stiff ones.
 
 use super::TransientError;
 use super::dopri::Dopri5;
+use super::exact::Exact;
 use super::ros2::Ros2;
 
 /// Which integrator to use.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Method {
-    /// Explicit Dormand–Prince 5(4) unless the model is stiff (see [`is_stiff`]).
+    /// The exact discretization where it applies (a steady run of a model without an
+    /// engine whose equations are affine, [`super::exact`]); else Dormand–Prince 5(4)
+    /// unless the model is stiff (see [`is_stiff`]).
     #[default]
     Auto,
+    /// The exact discretization ([`super::exact`]); a run it does not apply to is refused.
+    Exact,
     /// Dormand–Prince 5(4).
     Explicit,
     /// ROS2, linearly implicit, L-stable.
@@ -29,6 +35,8 @@ pub enum Stepper {
     Explicit(Dopri5),
     /// ROS2.
     Implicit(Ros2),
+    /// Exact discretization of a linear plant.
+    Exact(Box<Exact>),
 }
 
 impl Stepper {
@@ -37,6 +45,7 @@ impl Stepper {
         match self {
             Stepper::Explicit(s) => s.t,
             Stepper::Implicit(s) => s.t,
+            Stepper::Exact(s) => s.t,
         }
     }
 
@@ -45,6 +54,7 @@ impl Stepper {
         match self {
             Stepper::Explicit(s) => &s.y,
             Stepper::Implicit(s) => &s.y,
+            Stepper::Exact(s) => &s.y,
         }
     }
 
@@ -53,6 +63,7 @@ impl Stepper {
         match self {
             Stepper::Explicit(s) => s.steps,
             Stepper::Implicit(s) => s.steps,
+            Stepper::Exact(s) => s.steps,
         }
     }
 
@@ -61,6 +72,7 @@ impl Stepper {
         match self {
             Stepper::Explicit(s) => s.h,
             Stepper::Implicit(s) => s.h,
+            Stepper::Exact(s) => s.h,
         }
     }
 
@@ -69,6 +81,7 @@ impl Stepper {
         match self {
             Stepper::Explicit(s) => s.worst_state,
             Stepper::Implicit(s) => s.worst_state,
+            Stepper::Exact(_) => 0,
         }
     }
 
@@ -86,6 +99,7 @@ impl Stepper {
         match self {
             Stepper::Explicit(s) => s.step(t_end, rhs),
             Stepper::Implicit(s) => s.step(t_end, rhs),
+            Stepper::Exact(s) => s.step(t_end),
         }
     }
 
@@ -94,6 +108,7 @@ impl Stepper {
         match self {
             Stepper::Explicit(s) => s.interpolate(t, out),
             Stepper::Implicit(s) => s.interpolate(t, out),
+            Stepper::Exact(s) => s.interpolate(t, out),
         }
     }
 }
