@@ -14,7 +14,7 @@
 
 use num_complex::Complex64;
 use std::f64::consts::{PI, TAU};
-use torsim::modal::{damped_modes, modes};
+use torsim::modal::{damped_modes, modes, shares_by_connection, strain_energy_shares};
 use torsim::model::{parse_model, to_toml_string};
 use torsim::physics::{Excitation, OperatingPoint, System};
 use torsim::recording::Run;
@@ -174,6 +174,12 @@ fn a_free_shaft_between_disks_meets_its_continuous_solution() {
         3,
     );
     assert_eq!(exact.len(), 3);
+    // Its segments are one connection: all the strain energy, summed.
+    assert!(system.distributed[0].segments() > 1);
+    let shares = strain_energy_shares(&system, &found[0]);
+    let by_connection = shares_by_connection(&system, &shares);
+    assert_eq!(by_connection.len(), 1);
+    assert!((by_connection[0].1 - 1.0).abs() < 1e-12);
     let transit_s = (j_shaft / k).sqrt();
     for (mode, beta) in found.iter().zip(&exact) {
         let f = beta / transit_s / TAU;

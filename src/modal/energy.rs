@@ -37,6 +37,19 @@ pub fn strain_energy_shares(system: &System, mode: &Mode) -> Vec<f64> {
     }
 }
 
+/// Per-element `shares` summed per connection, `(connection index, share)` in the order of
+/// each connection's first element: a distributed shaft's segments are one connection.
+pub fn shares_by_connection(system: &System, shares: &[f64]) -> Vec<(usize, f64)> {
+    let mut out: Vec<(usize, f64)> = Vec::new();
+    for (e, &share) in system.elements.iter().zip(shares) {
+        match out.iter_mut().find(|(c, _)| *c == e.connection) {
+            Some((_, sum)) => *sum += share,
+            None => out.push((e.connection, share)),
+        }
+    }
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

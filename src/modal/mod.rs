@@ -13,6 +13,6 @@ pub mod wittrick_williams;
 
 pub use campbell::{Campbell, Crossing, campbell, critical_speed_rpm, speed_grid};
 pub use damped::{DampedMode, damped_modes};
-pub use energy::{strain_energy_j, strain_energy_shares};
+pub use energy::{shares_by_connection, strain_energy_j, strain_energy_shares};
 pub use law_deviation::{LawDeviation, law_deviations};
 pub use undamped::{Mode, modes};

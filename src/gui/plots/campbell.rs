@@ -157,6 +157,17 @@ fn diagram_ui(
         .crossings
         .iter()
         .partition(|x| is_major(step, x.order));
+    let above = diagram
+        .frequency_hz
+        .iter()
+        .filter(|f| f.iter().all(|v| *v > f_top))
+        .count();
+    if above > 0 {
+        ui.weak(format!(
+            "{above} mode(s) above {f_top:.0} Hz, the highest order at top speed: drawn beyond \
+             the view (zoom out), not listed"
+        ));
+    }
     let strong = ui.visuals().strong_text_color();
     let faint = ui.visuals().weak_text_color().gamma_multiply(0.5);
     let (hover_major, hover_minor) = (major.clone(), minor.clone());
@@ -232,11 +243,14 @@ fn diagram_ui(
             }
             for (i, f) in diagram.frequency_hz.iter().enumerate() {
                 let line: PlotPoints = speeds.iter().zip(f).map(|(&n, &f)| [n, f]).collect();
-                plot.line(
-                    Line::new(format!("mode {} · {:.2} Hz", i + 1, f[0]), line)
-                        .color(mode_color(i))
-                        .width(2.0),
-                );
+                // The legend names the modes in the opening view; those above it (a
+                // distributed shaft has many) are still drawn, unnamed.
+                let name = if f.iter().all(|v| *v > f_top) {
+                    String::new()
+                } else {
+                    format!("mode {} · {:.2} Hz", i + 1, f[0])
+                };
+                plot.line(Line::new(name, line).color(mode_color(i)).width(2.0));
             }
             let at = |v: &[Crossing]| -> Vec<[f64; 2]> {
                 v.iter().map(|x| [x.speed_rpm, x.frequency_hz]).collect()

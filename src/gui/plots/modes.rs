@@ -7,7 +7,7 @@ use crate::gui::app::TorsimApp;
 use egui::Ui;
 use egui_plot::{GridMark, HLine, HoverPosition, Line, Plot, PlotPoint, PlotPoints, Points, Text};
 use std::collections::VecDeque;
-use torsim::modal::{Campbell, DampedMode};
+use torsim::modal::{Campbell, DampedMode, shares_by_connection};
 use torsim::physics::System;
 
 /// Nodes in driveline order: from one end of the longest path through the springs (the
@@ -76,14 +76,12 @@ pub fn mode_text(diagram: &Campbell, damped: &[DampedMode], i: usize) -> String 
     }
 }
 
-/// The element keeping most of mode `i`'s strain energy: its connection name and share.
+/// The connection keeping most of mode `i`'s strain energy: its name and share.
 pub fn main_element(system: &System, diagram: &Campbell, i: usize) -> Option<(String, f64)> {
     let shares = diagram.strain_energy_share.get(i)?;
-    let (e, &share) = shares
-        .iter()
-        .enumerate()
-        .max_by(|a, b| a.1.total_cmp(b.1))?;
-    let connection = system.elements.get(e)?.connection;
+    let (connection, share) = shares_by_connection(system, shares)
+        .into_iter()
+        .max_by(|a, b| a.1.total_cmp(&b.1))?;
     Some((system.connection_names.get(connection)?.clone(), share))
 }
 
@@ -205,7 +203,8 @@ pub fn plot_data(app: &TorsimApp) -> Option<PlotData> {
 
 /// Share of the mode's strain energy per connection, largest highlighted.
 fn energy_table_ui(ui: &mut Ui, system: &System, shares: &[f64]) {
-    let largest = shares.iter().copied().fold(0.0, f64::max);
+    let shares = shares_by_connection(system, shares);
+    let largest = shares.iter().map(|s| s.1).fold(0.0, f64::max);
     egui::Grid::new("strain_energy")
         .num_columns(2)
         .striped(true)
@@ -213,10 +212,10 @@ fn energy_table_ui(ui: &mut Ui, system: &System, shares: &[f64]) {
             ui.strong("connection");
             ui.strong("share of the strain energy");
             ui.end_row();
-            for (e, &share) in system.elements.iter().zip(shares) {
+            for (connection, share) in shares {
                 let name = system
                     .connection_names
-                    .get(e.connection)
+                    .get(connection)
                     .map_or("", String::as_str);
                 if share == largest {
                     ui.strong(name);

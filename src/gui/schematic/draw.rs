@@ -194,8 +194,8 @@ fn link_ui(p: &Painter, pal: &Palette, model: &Model, link: &LinkShape) {
     match &c.kind {
         // A shaft with its own inertia: a solid bar, the mass along it, over the spring.
         ConnectionKind::Shaft(shaft) if shaft.inertia_kg_m2 > 0.0 => {
-            let bar = egui::Rect::from_center_size(s.center(), vec2(s.width(), 0.45 * s.height()));
-            p.rect_filled(bar, 2.0, color.gamma_multiply(0.35));
+            let bar = egui::Rect::from_center_size(s.center(), vec2(s.width(), 0.6 * s.height()));
+            p.rect_filled(bar, 3.0, color.gamma_multiply(0.45));
             spring(p, s, Stroke::new(1.5, color));
         }
         ConnectionKind::Shaft(_) => spring(p, s, Stroke::new(1.5, color)),
