@@ -9,6 +9,7 @@
 
 use super::undamped::Mode;
 use crate::physics::System;
+use crate::physics::distributed::connection_rows;
 
 /// Strain energy of each element of `system` (in element order) for `mode` at unit modal
 /// coordinate, J (N·m·rad² for a mass-normalised shape in kg·m²-referred coordinates).
@@ -40,11 +41,12 @@ pub fn strain_energy_shares(system: &System, mode: &Mode) -> Vec<f64> {
 /// Per-element `shares` summed per connection, `(connection index, share)` in the order of
 /// each connection's first element: a distributed shaft's segments are one connection.
 pub fn shares_by_connection(system: &System, shares: &[f64]) -> Vec<(usize, f64)> {
+    let rows = connection_rows(system.elements.iter().map(|e| e.connection));
     let mut out: Vec<(usize, f64)> = Vec::new();
-    for (e, &share) in system.elements.iter().zip(shares) {
-        match out.iter_mut().find(|(c, _)| *c == e.connection) {
-            Some((_, sum)) => *sum += share,
-            None => out.push((e.connection, share)),
+    for ((e, &share), (_, first)) in system.elements.iter().zip(shares).zip(rows) {
+        match out.last_mut() {
+            Some((_, sum)) if !first => *sum += share,
+            _ => out.push((e.connection, share)),
         }
     }
     out

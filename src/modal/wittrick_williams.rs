@@ -58,18 +58,15 @@ struct Counter<'a> {
 impl<'a> Counter<'a> {
     fn new(system: &'a System) -> Self {
         let n = system.dof_of_node.iter().max().map_or(0, |m| m + 1);
-        let mut node_inertia_kg_m2 = system.inertia_kg_m2[..n].to_vec();
+        let node_inertia_kg_m2 = system.inertia_kg_m2[..n]
+            .iter()
+            .zip(system.segment_inertia_kg_m2())
+            .map(|(j, segments)| j - segments)
+            .collect();
         let mut segment = vec![false; system.elements.len()];
         for d in &system.distributed {
             for e in d.elements.clone() {
                 segment[e] = true;
-                let element = &system.elements[e];
-                let half = 0.5 * element.distributed_inertia();
-                for dof in [element.from_dof, element.to_dof].into_iter().flatten() {
-                    if dof < n {
-                        node_inertia_kg_m2[dof] -= half;
-                    }
-                }
             }
         }
         let others = (0..system.elements.len())
@@ -99,13 +96,7 @@ impl<'a> Counter<'a> {
             let (k, j) = (s.stiffness_nm_per_rad, s.inertia_kg_m2);
             j0 += distributed::clamped_below(k, j, omega_rad_s);
             let (aa, ab) = distributed::exact_ends(Complex64::new(k, 0.0), j, omega_rad_s);
-            for dof in [s.from_dof, s.to_dof].into_iter().flatten() {
-                d[(dof, dof)] += aa.re;
-            }
-            if let (Some(a), Some(b)) = (s.from_dof, s.to_dof) {
-                d[(a, b)] += ab.re;
-                d[(b, a)] += ab.re;
-            }
+            matrices::add_two_port(&mut d, s.from_dof, s.to_dof, aa.re, ab.re);
         }
         j0 + negative_pivots(d)
     }

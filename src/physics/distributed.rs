@@ -63,6 +63,39 @@ impl DistributedShaft {
     }
 }
 
+/// The result row of each item of a sequence of connection indices, and whether it is the
+/// row's first: consecutive items of one connection (a distributed shaft's segments)
+/// share a row. Rows are numbered in order of appearance.
+pub fn connection_rows(connections: impl IntoIterator<Item = usize>) -> Vec<(usize, bool)> {
+    let mut rows = Vec::new();
+    let mut previous = None;
+    let mut count = 0;
+    for c in connections {
+        if previous == Some(c) {
+            rows.push((count - 1, false));
+        } else {
+            rows.push((count, true));
+            count += 1;
+        }
+        previous = Some(c);
+    }
+    rows
+}
+
+impl super::System {
+    /// Per DOF, the inertia the distributed shafts' segments lump onto it (half of each
+    /// segment's at each of its ends), kg·m²: part of [`super::System::inertia_kg_m2`].
+    pub fn segment_inertia_kg_m2(&self) -> Vec<f64> {
+        let mut out = vec![0.0; self.dof_count()];
+        for e in &self.elements {
+            for d in [e.from_dof, e.to_dof].into_iter().flatten() {
+                out[d] += 0.5 * e.distributed_inertia();
+            }
+        }
+        out
+    }
+}
+
 /// What [`expand`] adds to: the referred inertia and damping per DOF, the elements, and
 /// the warnings for a person.
 pub(super) struct Assembly<'a> {
@@ -213,14 +246,7 @@ pub fn add_exact_correction(
 ) {
     let (d_aa, d_ab) = exact_ends(k, inertia_kg_m2, omega_rad_s);
     let half = 0.5 * omega_rad_s * omega_rad_s * inertia_kg_m2;
-    let diagonal = d_aa - k + half;
-    for d in [a, b].into_iter().flatten() {
-        out[(d, d)] += diagonal;
-    }
-    if let (Some(a), Some(b)) = (a, b) {
-        out[(a, b)] += d_ab + k;
-        out[(b, a)] += d_ab + k;
-    }
+    super::matrices::add_two_port(out, a, b, d_aa - k + half, d_ab + k);
 }
 
 #[cfg(test)]

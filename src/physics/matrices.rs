@@ -2,22 +2,34 @@
 
 use nalgebra::{DMatrix, Scalar};
 use num_complex::Complex64;
-use std::ops::{AddAssign, SubAssign};
+use std::ops::{AddAssign, Neg};
 
 /// Adds a spring of stiffness `k` between DOFs `a` and `b` (`None`: ground).
 pub fn add_spring<T>(matrix: &mut DMatrix<T>, a: Option<usize>, b: Option<usize>, k: T)
 where
-    T: Scalar + Copy + AddAssign + SubAssign,
+    T: Scalar + Copy + AddAssign + Neg<Output = T>,
 {
-    if let Some(a) = a {
-        matrix[(a, a)] += k;
-    }
-    if let Some(b) = b {
-        matrix[(b, b)] += k;
+    add_two_port(matrix, a, b, k, -k);
+}
+
+/// Adds a symmetric two-port between DOFs `a` and `b` (`None`: ground, whose row and
+/// column are dropped): `diagonal` on both diagonal entries, `off_diagonal` on both
+/// couplings. A spring is `(k, −k)`; a distributed shaft's exact element `(D_aa, D_ab)`.
+pub fn add_two_port<T>(
+    matrix: &mut DMatrix<T>,
+    a: Option<usize>,
+    b: Option<usize>,
+    diagonal: T,
+    off_diagonal: T,
+) where
+    T: Scalar + Copy + AddAssign,
+{
+    for d in [a, b].into_iter().flatten() {
+        matrix[(d, d)] += diagonal;
     }
     if let (Some(a), Some(b)) = (a, b) {
-        matrix[(a, b)] -= k;
-        matrix[(b, a)] -= k;
+        matrix[(a, b)] += off_diagonal;
+        matrix[(b, a)] += off_diagonal;
     }
 }
 

@@ -226,27 +226,18 @@ fn sweep(
     Ok(response)
 }
 
-/// The result rows: one per connection with elements, each row's element that gives its
+/// The result rows ([`distributed::connection_rows`]): each row's element that gives its
 /// torque (a distributed shaft's first segment: the torque at its `from` end), and the row
 /// of every element (a distributed shaft's segments all add their loss to its row).
 fn result_rows(system: &System) -> (Vec<usize>, Vec<usize>) {
-    let mut rows = Vec::new();
-    let mut row_of: Vec<usize> = Vec::with_capacity(system.elements.len());
-    for i in 0..system.elements.len() {
-        let first_of_shaft = system
-            .distributed
-            .iter()
-            .find(|d| d.elements.contains(&i))
-            .map(|d| d.elements.start);
-        match first_of_shaft {
-            Some(first) if first != i => row_of.push(row_of[first]),
-            _ => {
-                row_of.push(rows.len());
-                rows.push(i);
-            }
-        }
-    }
-    (rows, row_of)
+    let rows = distributed::connection_rows(system.elements.iter().map(|e| e.connection));
+    let firsts = rows
+        .iter()
+        .enumerate()
+        .filter(|(_, (_, first))| *first)
+        .map(|(i, _)| i)
+        .collect();
+    (firsts, rows.iter().map(|(row, _)| *row).collect())
 }
 
 /// An element's referred torque at its `from` end and the energy it dissipates per cycle,

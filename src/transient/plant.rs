@@ -8,6 +8,7 @@
 
 use super::TransientError;
 use crate::model::{AmplitudeForm, ConnectionKind, GROUND, HarmonicAmplitude, Model, Poly};
+use crate::physics::distributed::connection_rows;
 use crate::physics::{OperatingPoint, System, engine};
 use crate::rubber::MaxwellChain;
 
@@ -242,11 +243,8 @@ impl Plant {
         for (i, node) in model.inertias.iter().enumerate() {
             inertia[system.dof_of_node[i]] += node.inertia_kg_m2 * system.speed_ratio[i].powi(2);
         }
-        // Distributed shafts: half of each segment's inertia at each of its DOFs.
-        for e in &system.elements {
-            for d in [e.from_dof, e.to_dof].into_iter().flatten() {
-                inertia[d] += 0.5 * e.distributed_inertia();
-            }
+        for (j, segments) in inertia.iter_mut().zip(system.segment_inertia_kg_m2()) {
+            *j += segments;
         }
         let damping = system.absolute_damping_nm_s_per_rad.clone();
         let dof_of = |name: &str| {
@@ -269,8 +267,9 @@ impl Plant {
                 ratio_of(&c.from)
             };
             let (ratio, law) = match &c.kind {
-                // A distributed shaft is its chain of segments (internal DOFs included).
-                ConnectionKind::Shaft(s) if s.inertia_kg_m2 > 0.0 => {
+                // A shaft as the system has it: one element, or a distributed shaft's
+                // chain of segments (internal DOFs included).
+                ConnectionKind::Shaft(_) => {
                     for e in system.elements.iter().filter(|e| e.connection == j) {
                         elements.push(PlantElement {
                             connection: j,
@@ -285,13 +284,6 @@ impl Plant {
                     }
                     continue;
                 }
-                ConnectionKind::Shaft(s) => (
-                    own,
-                    PlantLaw::Linear {
-                        stiffness: s.stiffness_nm_per_rad * own * own,
-                        damping: s.damping_nm_s_per_rad * own * own,
-                    },
-                ),
                 ConnectionKind::Gear(g) => match (g.mesh_stiffness_nm_per_rad, g.backlash_deg) {
                     (None, b) if b > 0.0 => {
                         return Err(TransientError::Model(format!(
@@ -429,7 +421,7 @@ impl Plant {
                     dissipation_torque_nm: 0.0,
                 }
             });
-        let output_rows = output_rows(&elements);
+        let output_rows = connection_rows(elements.iter().map(|e| e.connection));
         Ok(Plant {
             output_rows,
             n_dof: n,
@@ -455,23 +447,6 @@ impl Plant {
 }
 
 impl Plant {
-    /// The output row of each element and whether it gives the row's torque: one row per
-    /// connection with elements, in element order; a distributed shaft's segments share
-    /// one row (torque at its `from` end, the power of all its segments).
-    pub fn output_rows(&self) -> Vec<(usize, bool)> {
-        let mut rows = Vec::with_capacity(self.elements.len());
-        let mut count = 0;
-        for (i, e) in self.elements.iter().enumerate() {
-            if i > 0 && self.elements[i - 1].connection == e.connection {
-                rows.push((count - 1, false));
-            } else {
-                rows.push((count, true));
-                count += 1;
-            }
-        }
-        rows
-    }
-
     /// Start temperature of the rubber stage of connection `connection`, °C.
     pub fn system_temperature(&self, connection: usize) -> f64 {
         self.start_temperature_c
@@ -506,19 +481,4 @@ impl Plant {
             .fold(0.0, f64::max);
         modes.max(arms)
     }
-}
-
-/// [`Plant::output_rows`] of `elements` (a distributed shaft's segments are consecutive).
-fn output_rows(elements: &[PlantElement]) -> Vec<(usize, bool)> {
-    let mut rows = Vec::with_capacity(elements.len());
-    let mut count = 0;
-    for (i, e) in elements.iter().enumerate() {
-        if i > 0 && elements[i - 1].connection == e.connection {
-            rows.push((count - 1, false));
-        } else {
-            rows.push((count, true));
-            count += 1;
-        }
-    }
-    rows
 }
