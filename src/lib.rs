@@ -65,6 +65,7 @@
 
 #![warn(missing_docs)]
 
+pub mod calibrate;
 pub mod campaign;
 pub mod check;
 pub mod compare;

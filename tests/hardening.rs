@@ -363,8 +363,8 @@ fn crashes_and_hangs() -> Vec<Case> {
         Case {
             name: "thermal-stage-with-tiny-capacity",
             setup: |d| {
-                let thermal = "psi = 1.0\nthermal = { capacity_j_per_k = 1e-9, conductance_w_per_k = 1.0, ambient_c = 25.0 }\n";
-                let m = model(d, "test-rig-70sh", &[("psi = 1.0\n", thermal)]);
+                let thermal = "psi = 0.4343\nthermal = { capacity_j_per_k = 1e-9, conductance_w_per_k = 1.0, ambient_c = 25.0 }\n";
+                let m = model(d, "test-rig-70sh", &[("psi = 0.4343\n", thermal)]);
                 args(&["simulate", &m, "--speed-rpm", "3000", "--duration-s", "0.2"])
             },
             exit: 0,
@@ -374,7 +374,7 @@ fn crashes_and_hangs() -> Vec<Case> {
         Case {
             name: "explicit-method-on-a-stiff-model",
             setup: |d| {
-                let m = model(d, "test-rig-70sh", &[("stiffness = 18055.4", "stiffness = 1e12")]);
+                let m = model(d, "test-rig-70sh", &[("stiffness = 12684.0", "stiffness = 1e12")]);
                 args(&["simulate", &m, "--speed-rpm", "3000", "--duration-s", "0.2", "--method", "explicit"])
             },
             exit: 1,
@@ -544,8 +544,8 @@ fn wrong_but_silent() -> Vec<Case> {
         Case {
             name: "coupling-frequency-factor-below-zero",
             setup: |d| {
-                let poly = "psi = 1.0\nfrequency_poly = [0.0, -0.02, 1.0]\n";
-                let m = model(d, "test-rig-70sh", &[("psi = 1.0\n", poly)]);
+                let poly = "psi = 0.4343\nfrequency_poly = [0.0, -0.02, 1.0]\n";
+                let m = model(d, "test-rig-70sh", &[("psi = 0.4343\n", poly)]);
                 args(&["coupling", &m, "--frequency-hz", "100"])
             },
             exit: 2,
@@ -555,8 +555,8 @@ fn wrong_but_silent() -> Vec<Case> {
         Case {
             name: "simulate-frequency-factor-below-zero",
             setup: |d| {
-                let poly = "psi = 1.0\nfrequency_poly = [0.0, -0.02, 1.0]\n";
-                let m = model(d, "test-rig-70sh", &[("psi = 1.0\n", poly)]);
+                let poly = "psi = 0.4343\nfrequency_poly = [0.0, -0.02, 1.0]\n";
+                let m = model(d, "test-rig-70sh", &[("psi = 0.4343\n", poly)]);
                 args(&["simulate", &m, "--speed-rpm", "3000", "--duration-s", "0.2"])
             },
             exit: 2,
@@ -799,7 +799,7 @@ fn vague_errors() -> Vec<Case> {
                 let m = model(
                     d,
                     "test-rig-70sh",
-                    &[("stiffness = 18055.4", "stiffness = 1e-308")],
+                    &[("stiffness = 12684.0", "stiffness = 1e-308")],
                 );
                 args(&["modes", &m])
             },

@@ -208,7 +208,11 @@ fn modes_refuse_a_frequency_factor_at_or_below_zero() {
     let text = torsim::model::presets::preset("test-rig-mod1")
         .unwrap()
         .text
-        .replacen("psi = 0.75", "psi = 0.75\nfrequency_poly = [0, -0.5, 1]", 1);
+        .replacen(
+            "psi = 0.3257",
+            "psi = 0.3257\nfrequency_poly = [0, -0.5, 1]",
+            1,
+        );
     let model = torsim::model::parse_model(&text, "rig.toml").expect("valid");
     // The causal system refuses it before fitting its chain (α_f ≤ 0 in the band) …
     match System::new(&model, OperatingPoint::default()) {

@@ -171,8 +171,8 @@ mod tests {
         let text = torsim::model::presets::preset("test-rig-mod1")
             .map(|p| {
                 p.text.replacen(
-                    "psi = 0.75",
-                    "psi = 0.75\nfrequency_poly = [0, -0.02, 1]",
+                    "psi = 0.3257",
+                    "psi = 0.3257\nfrequency_poly = [0, -0.02, 1]",
                     1,
                 )
             })
