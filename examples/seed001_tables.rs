@@ -14,8 +14,8 @@
 //!   and prints Tables 9–13 beside the paper's, with the gaps.
 //! - `seed000`: the cng-genset order-3 critical speed at restricted and full load.
 
-use torsim::calibrate::{Knob, Target, calibrate, evaluate};
-use torsim::compare::{RegimePoint, compare_regimes};
+use torsim::calibrate::{Knob, Target, calibrate, evaluate, parameter_value};
+use torsim::compare::{compare_regimes, model_regimes};
 use torsim::modal::modes;
 use torsim::model::{Model, parse_model, presets};
 use torsim::physics::{OperatingPoint, System};
@@ -133,7 +133,7 @@ fn starts() -> usize {
 fn with_rubber(model: &Model, youngs_ratio: f64, psi: f64) -> Model {
     let mut m = model.clone();
     for name in ["connection.b.stiffness", "connection.c.stiffness"] {
-        let k = stiffness(&m, name);
+        let k = value(&m, name);
         torsim::calibrate::set_parameter(&mut m, model, name, k * youngs_ratio).expect("knob");
     }
     torsim::calibrate::set_parameter(&mut m, model, "connection.b.psi,connection.c.psi", psi)
@@ -141,20 +141,9 @@ fn with_rubber(model: &Model, youngs_ratio: f64, psi: f64) -> Model {
     m
 }
 
-fn stiffness(m: &Model, name: &str) -> f64 {
-    let conn = name.split('.').nth(1).expect("name");
-    m.connections
-        .iter()
-        .find(|c| c.name == conn)
-        .and_then(|c| match &c.kind {
-            torsim::model::ConnectionKind::Shaft(s) => Some(s.stiffness_nm_per_rad),
-            torsim::model::ConnectionKind::Rubber(r) => match r.stiffness {
-                torsim::model::RubberStiffness::Direct(k) => Some(k),
-                _ => None,
-            },
-            _ => None,
-        })
-        .expect("stiffness")
+/// A knob's value in `m` (the example's models have every knob it asks).
+fn value(m: &Model, name: &str) -> f64 {
+    parameter_value(m, name).expect("knob")
 }
 
 fn lp_modes(m: &Model) -> Vec<f64> {
@@ -168,7 +157,7 @@ fn lp_modes(m: &Model) -> Vec<f64> {
 
 fn size_mods() {
     let rig70 = preset("test-rig-70sh");
-    let psi70 = rig_psi(&rig70);
+    let psi70 = value(&rig70, "connection.b.psi");
     // Table 4's Young's moduli at 60 °C; ψ of 45 / 60 Sh as the presets choose, relative
     // to 70 Sh's.
     let rig45 = with_rubber(&rig70, 1.32 / 4.72, psi70 * 0.75);
@@ -217,40 +206,15 @@ fn size_mods() {
     }
 }
 
-fn value(m: &Model, name: &str) -> f64 {
-    if let Some(node) = name.strip_prefix("inertia.") {
-        m.inertias
-            .iter()
-            .find(|n| n.name == node)
-            .expect("node")
-            .inertia_kg_m2
-    } else {
-        stiffness(m, name)
-    }
-}
-
-fn rig_psi(m: &Model) -> f64 {
-    m.connections
-        .iter()
-        .find_map(|c| match &c.kind {
-            torsim::model::ConnectionKind::Rubber(r) => Some(r.psi),
-            _ => None,
-        })
-        .expect("rubber")
-}
-
 fn run_compare(m: &Model) -> torsim::compare::VariantResult {
-    let regimes: Vec<RegimePoint> = m
-        .operation
-        .regimes
-        .iter()
-        .map(|r| RegimePoint {
-            label: r.label.clone(),
-            speed_rpm: r.speed_rpm,
-            load: r.load,
-        })
-        .collect();
-    compare_regimes(m, &regimes, 1.0, RunOptions::default(), &mut |_| true).expect("compare")
+    compare_regimes(
+        m,
+        &model_regimes(m),
+        1.0,
+        RunOptions::default(),
+        &mut |_| true,
+    )
+    .expect("compare")
 }
 
 fn print_ir(title: &str, r: &torsim::compare::VariantResult, paper: &[[f64; 6]; 3]) {

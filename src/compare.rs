@@ -18,6 +18,20 @@ pub struct RegimePoint {
     pub load: f64,
 }
 
+/// The model's own `[operation] regimes`, as points to compare at.
+pub fn model_regimes(model: &Model) -> Vec<RegimePoint> {
+    model
+        .operation
+        .regimes
+        .iter()
+        .map(|r| RegimePoint {
+            label: r.label.clone(),
+            speed_rpm: r.speed_rpm,
+            load: r.load,
+        })
+        .collect()
+}
+
 /// One variant's results over the regimes.
 #[derive(Debug, Clone, PartialEq)]
 pub struct VariantResult {

@@ -5,7 +5,7 @@
 //! domain to Table 13's ranking at Regime A.
 
 use torsim::calibrate::{Target, evaluate};
-use torsim::compare::{RegimePoint, compare_regimes};
+use torsim::compare::{compare_regimes, model_regimes};
 use torsim::model::{Model, parse_model, presets};
 use torsim::transient::RunOptions;
 
@@ -112,13 +112,8 @@ fn the_time_domain_ranks_the_mods_as_table_13_at_regime_a() {
     let mut flange_ir = Vec::new();
     for name in ["test-rig-mod1", "test-rig-mod2", "test-rig-mod3"] {
         let m = preset(name);
-        let a = &m.operation.regimes[0];
-        let regime = RegimePoint {
-            label: a.label.clone(),
-            speed_rpm: a.speed_rpm,
-            load: a.load,
-        };
-        let r = compare_regimes(&m, &[regime], 1.0, RunOptions::default(), &mut |_| true)
+        let regime_a = model_regimes(&m).swap_remove(0);
+        let r = compare_regimes(&m, &[regime_a], 1.0, RunOptions::default(), &mut |_| true)
             .expect("compare");
         loss_w.push(r.power_loss_w.iter().map(|s| s[0]).sum::<f64>());
         let node = r

@@ -6,7 +6,7 @@ use super::format::{emit, numbers, outln, print_json, table};
 use super::input::{check_load, load_model};
 use super::progress::Progress;
 use serde_json::{Map, Value, json};
-use torsim::compare::{RegimePoint, compare_regimes};
+use torsim::compare::{RegimePoint, compare_regimes, model_regimes};
 use torsim::transient::RunOptions;
 
 /// Options of the command.
@@ -45,16 +45,7 @@ pub fn run(a: &CompareArgs) -> Result<(), CliError> {
                     load,
                 })
                 .collect(),
-            None => model
-                .operation
-                .regimes
-                .iter()
-                .map(|r| RegimePoint {
-                    label: r.label.clone(),
-                    speed_rpm: r.speed_rpm,
-                    load: r.load,
-                })
-                .collect(),
+            None => model_regimes(&model),
         };
         if regimes.is_empty() {
             return Err(CliError::input(anyhow::anyhow!(
