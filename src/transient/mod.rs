@@ -16,6 +16,7 @@ pub mod budget;
 pub mod dopri;
 mod error;
 pub mod exact;
+mod exact_step;
 mod export;
 pub mod forces;
 pub mod observe;
