@@ -90,6 +90,45 @@ impl StepMatrices {
     /// of length `r`); `z` and `out` of [`padded_len`].
     #[inline]
     pub(super) fn predict(&self, z: &[f64], n: &[f64], out: &mut [f64]) {
+        match self.first.len() {
+            1 => self.predict_fixed::<1>(z, n, out),
+            2 => self.predict_fixed::<2>(z, n, out),
+            3 => self.predict_fixed::<3>(z, n, out),
+            4 => self.predict_fixed::<4>(z, n, out),
+            _ => self.predict_any(z, n, out),
+        }
+    }
+
+    /// [`Self::predict`] for `B` blocks of rows, all in registers at once: every column is
+    /// added to every block (the zeros below the plant's rows add nothing).
+    #[inline(always)]
+    fn predict_fixed<const B: usize>(&self, z: &[f64], n: &[f64], out: &mut [f64]) {
+        let (s, r) = (self.size, self.columns);
+        let phi: [&[Lanes]; B] = std::array::from_fn(|b| &self.phi[b * s..(b + 1) * s]);
+        let gamma: [&[Lanes]; B] = std::array::from_fn(|b| &self.gamma1[b * r..(b + 1) * r]);
+        let mut acc = [[0.0; LANES]; B];
+        for (j, &zj) in z[..s].iter().enumerate() {
+            for b in 0..B {
+                for k in 0..LANES {
+                    acc[b][k] += phi[b][j][k] * zj;
+                }
+            }
+        }
+        for (j, &nj) in n[..r].iter().enumerate() {
+            for b in 0..B {
+                for k in 0..LANES {
+                    acc[b][k] += gamma[b][j][k] * nj;
+                }
+            }
+        }
+        let (out, _) = out.as_chunks_mut::<LANES>();
+        for (o, a) in out.iter_mut().zip(acc) {
+            *o = a;
+        }
+    }
+
+    /// [`Self::predict`] for any number of blocks, one block after the other.
+    fn predict_any(&self, z: &[f64], n: &[f64], out: &mut [f64]) {
         let (s, r) = (self.size, self.columns);
         let (z, n) = (&z[..s], &n[..r]);
         let (out, _) = out.as_chunks_mut::<LANES>();
@@ -130,10 +169,16 @@ mod tests {
     use nalgebra::DVector;
 
     /// The hand-written products give `gemv`'s results to the bit on a dense random-ish
-    /// matrix with two remainder columns.
+    /// matrix with two remainder columns: two blocks of rows (the fixed-size path) and
+    /// five (the general one).
     #[test]
     fn products_match_gemv_to_the_bit() {
-        let (m, s) = (4, 7);
+        for (m, s) in [(4, 7), (12, 19)] {
+            products_match_gemv(m, s);
+        }
+    }
+
+    fn products_match_gemv(m: usize, s: usize) {
         let a = DMatrix::<f64>::from_fn(s, s, |i, j| {
             if i >= m && j < m {
                 0.0
