@@ -62,13 +62,12 @@ impl StepMatrices {
         let blocks = padded_len(s) / LANES;
         let by_blocks = |first_column: usize, width: usize, whole: bool| -> Vec<Lanes> {
             let mut out = vec![[0.0; LANES]; blocks * width];
-            for b in 0..blocks {
-                for j in 0..width {
-                    for k in 0..LANES {
-                        let i = b * LANES + k;
-                        if i < s && (whole || i < plant || j >= plant) {
-                            out[b * width + j][k] = e[(i, first_column + j)];
-                        }
+            for (index, lanes) in out.iter_mut().enumerate() {
+                let (b, j) = (index / width, index % width);
+                for (k, entry) in lanes.iter_mut().enumerate() {
+                    let i = b * LANES + k;
+                    if i < s && (whole || i < plant || j >= plant) {
+                        *entry = e[(i, first_column + j)];
                     }
                 }
             }
