@@ -29,9 +29,7 @@ impl Plant {
     }
 
     /// Torque and dissipation of element `e` at state `y`; writes the arm derivatives of
-    /// a rubber stage into `dy` when given. (Inlined: a linear element is a few products,
-    /// taken per sample and per derivative.)
-    #[inline]
+    /// a rubber stage into `dy` when given.
     pub fn element_state(
         &self,
         e: &PlantElement,
