@@ -22,11 +22,12 @@
 //! integrators integrate. The probe also checks that those equations are affine; a plant
 //! that is not goes to Dormand–Prince.
 //!
-//! Written here: the pieces (the exponential, a matrix–vector product) are nalgebra's; the
-//! scheme around them is particular to this plant.
+//! Written here: the exponential is nalgebra's; the scheme around it is particular to this
+//! plant, and the products a step takes are written out in [`super::exact_step`].
 
 use super::TransientError;
 use super::dopri::hermite;
+use super::exact_step::{StepMatrices, padded_len};
 use super::plant::Plant;
 use super::speed::SpeedProfile;
 use nalgebra::{DMatrix, DVector};
@@ -38,8 +39,9 @@ const AFFINE_TOLERANCE: f64 = 1e-9;
 /// One harmonic as the remainder sees it.
 #[derive(Debug, Clone)]
 struct Term {
-    /// Index of its order's oscillator (cos state; sin is the next).
-    oscillator: usize,
+    /// Index of its order's oscillator's cos state in the augmented state (sin is the
+    /// next).
+    cos_state: usize,
     /// Column of the remainder it adds to.
     column: usize,
     /// Acceleration amplitude `ratio·T/J`, rad/s².
@@ -62,7 +64,8 @@ pub struct Exact {
     pub steps: (u64, u64),
     /// The step, s.
     pub h: f64,
-    z: DVector<f64>,
+    /// The augmented state, padded to [`padded_len`] (the products' layout).
+    z: Vec<f64>,
     a: DMatrix<f64>,
     /// `(e^{hA}, h·φ1(hA)·E, h·φ2(hA)·E)` at the step `h`.
     step_matrices: StepMatrices,
@@ -71,9 +74,9 @@ pub struct Exact {
     terms: Vec<Term>,
     reference_dof: usize,
     /// Start of the last step: time and augmented state (for dense output).
-    last: (f64, DVector<f64>),
+    last: (f64, Vec<f64>),
     /// Buffers of a step: the stage and the remainder at its two points.
-    scratch: (DVector<f64>, DVector<f64>, DVector<f64>),
+    scratch: (Vec<f64>, Vec<f64>, Vec<f64>),
 }
 
 impl Exact {
@@ -107,13 +110,16 @@ impl Exact {
                 }
             };
             terms.push(Term {
-                oscillator,
+                cos_state: m + 1 + 2 * oscillator,
                 column,
                 coefficient: hp.ratio * hp.amplitude_nm(speed_rpm) / plant.inertia_kg_m2[hp.dof],
                 phase: (hp.phase_rad.cos(), hp.phase_rad.sin()),
                 order: hp.order,
             });
         }
+        // Column by column (stably: a column's terms keep the model's order), as the
+        // remainder sums them.
+        terms.sort_by_key(|t| t.column);
         let s = m + 1 + 2 * orders.len();
         let mut a = DMatrix::<f64>::zeros(s, s);
         let linear = probe(plant, speed_rpm)?;
@@ -125,17 +131,17 @@ impl Exact {
         }
         for t in &terms {
             let row = rows[t.column];
-            let c = m + 1 + 2 * t.oscillator;
+            let c = t.cos_state;
             a[(row, c)] += t.coefficient * t.phase.0;
             a[(row, c + 1)] -= t.coefficient * t.phase.1;
         }
-        let mut z = DVector::<f64>::zeros(s);
-        z.rows_mut(0, m).copy_from_slice(&y0);
+        let mut z = vec![0.0; padded_len(s)];
+        z[..m].copy_from_slice(&y0);
         z[m] = 1.0;
         for i in 0..orders.len() {
             z[m + 1 + 2 * i] = 1.0;
         }
-        let step_matrices = step_matrices(&a, &rows, h);
+        let step_matrices = StepMatrices::new(&a, m, &rows, h);
         Some(Self {
             t: 0.0,
             base: (0.0, 0),
@@ -144,9 +150,9 @@ impl Exact {
             h,
             last: (0.0, z.clone()),
             scratch: (
-                DVector::zeros(z.len()),
-                DVector::zeros(rows.len()),
-                DVector::zeros(rows.len()),
+                vec![0.0; z.len()],
+                vec![0.0; rows.len()],
+                vec![0.0; rows.len()],
             ),
             z,
             a,
@@ -166,48 +172,36 @@ impl Exact {
                 self.t
             )));
         }
+        let full = h >= self.h * (1.0 - 1e-12);
         let shorter;
-        let (phi, gamma1, gamma2) = if h < self.h * (1.0 - 1e-12) {
-            shorter = step_matrices(&self.a, &self.rows, h);
-            (&shorter.0, &shorter.1, &shorter.2)
+        let matrices = if full {
+            &self.step_matrices
         } else {
-            (
-                &self.step_matrices.0,
-                &self.step_matrices.1,
-                &self.step_matrices.2,
-            )
+            shorter = StepMatrices::new(&self.a, self.y.len(), &self.rows, h);
+            &shorter
         };
         let (mut stage, mut n0, mut n1) = std::mem::take(&mut self.scratch);
         self.remainder_into(&self.z, &mut n0);
-        // The plant rows take the whole product; the constant and the oscillators (below
-        // them) evolve by themselves, so their block is all that moves them.
-        let (m, s) = (self.y.len(), self.z.len());
-        stage
-            .rows_mut(0, m)
-            .gemv(1.0, &phi.rows(0, m), &self.z, 0.0);
-        stage.rows_mut(m, s - m).gemv(
-            1.0,
-            &phi.view((m, m), (s - m, s - m)),
-            &self.z.rows(m, s - m),
-            0.0,
-        );
-        stage.gemv(1.0, gamma1, &n0, 1.0);
+        matrices.predict(&self.z, &n0, &mut stage);
         self.remainder_into(&stage, &mut n1);
-        n1 -= &n0;
-        stage.gemv(1.0, gamma2, &n1, 1.0);
+        for (a, b) in n1.iter_mut().zip(&n0) {
+            *a -= b;
+        }
+        matrices.correct(&n1, &mut stage);
         // The previous state becomes the dense output's start; its buffer the next stage.
         std::mem::swap(&mut self.last.1, &mut self.z);
         std::mem::swap(&mut self.z, &mut stage);
         self.last.0 = self.t;
         self.scratch = (stage, n0, n1);
-        if std::ptr::eq(phi, &self.step_matrices.0) {
+        let m = self.y.len();
+        if full {
             self.base.1 += 1;
             self.t = self.base.0 + self.base.1 as f64 * self.h;
         } else {
             self.t += h;
             self.base = (self.t, 0);
         }
-        self.y.copy_from_slice(&self.z.as_slice()[..m]);
+        self.y.copy_from_slice(&self.z[..m]);
         self.steps.0 += 1;
         Ok(())
     }
@@ -223,17 +217,13 @@ impl Exact {
         let m = self.y.len();
         let (t0, z0) = &self.last;
         let (d0, d1) = (self.derivative(z0), self.derivative(&self.z));
-        hermite(
-            (*t0, &z0.as_slice()[..m], &d0),
-            (self.t, &self.y, &d1),
-            t,
-            out,
-        );
+        hermite((*t0, &z0[..m], &d0), (self.t, &self.y, &d1), t, out);
     }
 
     /// `ẏ = A·z + E·N(z)`, the plant state's part.
-    fn derivative(&self, z: &DVector<f64>) -> Vec<f64> {
-        let mut out: Vec<f64> = (&self.a * z).as_slice()[..self.y.len()].to_vec();
+    fn derivative(&self, z: &[f64]) -> Vec<f64> {
+        let augmented = DVector::from_column_slice(&z[..self.a.ncols()]);
+        let mut out: Vec<f64> = (&self.a * augmented).as_slice()[..self.y.len()].to_vec();
         let nz = self.remainder(z);
         for (c, row) in self.rows.iter().enumerate() {
             out[*row] += nz[c];
@@ -242,29 +232,47 @@ impl Exact {
     }
 
     /// The crank-angle remainder per column, rad/s².
-    fn remainder(&self, z: &DVector<f64>) -> DVector<f64> {
-        let mut out = DVector::<f64>::zeros(self.rows.len());
+    fn remainder(&self, z: &[f64]) -> Vec<f64> {
+        let mut out = vec![0.0; self.rows.len()];
         self.remainder_into(z, &mut out);
         out
     }
 
-    /// [`Self::remainder`] into `out` (no allocation: it runs twice per step).
-    fn remainder_into(&self, z: &DVector<f64>, out: &mut DVector<f64>) {
-        let m = self.y.len();
+    /// [`Self::remainder`] into `out` (no allocation: it runs twice per step). Each
+    /// column's terms are summed in registers (they are stored column by column) and the
+    /// sum written once: this is the step's critical path.
+    #[inline]
+    fn remainder_into(&self, z: &[f64], out: &mut [f64]) {
         let theta = z[self.reference_dof];
-        out.fill(0.0);
-        for t in &self.terms {
-            let (c, s) = (z[m + 1 + 2 * t.oscillator], z[m + 2 + 2 * t.oscillator]);
-            let cos_a = t.phase.0 * c - t.phase.1 * s;
-            let sin_a = t.phase.1 * c + t.phase.0 * s;
-            let (sin_d, cos_d_minus_one) = sin_and_cos_minus_one(t.order * theta);
-            out[t.column] += t.coefficient * (cos_a * cos_d_minus_one - sin_a * sin_d);
+        let columns = self.terms.chunk_by(|a, b| a.column == b.column);
+        for (o, terms) in out.iter_mut().zip(columns) {
+            if let Some((first, rest)) = terms.split_first() {
+                let mut sum = first.value(z, theta);
+                for t in rest {
+                    sum += t.value(z, theta);
+                }
+                *o = sum;
+            }
         }
+    }
+}
+
+impl Term {
+    /// Its remainder at augmented state `z` with the reference's vibration angle `theta`
+    /// (rad), rad/s².
+    #[inline(always)]
+    fn value(&self, z: &[f64], theta: f64) -> f64 {
+        let (c, s) = (z[self.cos_state], z[self.cos_state + 1]);
+        let cos_a = self.phase.0 * c - self.phase.1 * s;
+        let sin_a = self.phase.1 * c + self.phase.0 * s;
+        let (sin_d, cos_d_minus_one) = sin_and_cos_minus_one(self.order * theta);
+        self.coefficient * (cos_a * cos_d_minus_one - sin_a * sin_d)
     }
 }
 
 /// `(sin δ, cos δ − 1)` without cancellation: the Taylor series to δ⁷ below 0.05 rad
 /// (truncation < 2e-14 relative; the vibration angle is ~1e-4 rad), the library above.
+#[inline(always)]
 fn sin_and_cos_minus_one(delta: f64) -> (f64, f64) {
     if delta.abs() < 1e-3 {
         // The usual case: the next terms are below 1e-17 and 3e-15 of these.
@@ -325,25 +333,4 @@ fn probe(plant: &Plant, speed_rpm: f64) -> Option<DMatrix<f64>> {
         out[(i, m)] = f0[i];
     }
     out.iter().all(|v| v.is_finite()).then_some(out)
-}
-
-/// `(e^{hA}, h·φ1(hA)·E, h·φ2(hA)·E)`, E the unit columns of `rows`, from the exponential
-/// of `[[hA, hE, 0], [0, 0, I], [0, 0, 0]]`, whose top row of blocks is
-/// `[e^{hA}, h·φ1·E, h·φ2·E]`.
-type StepMatrices = (DMatrix<f64>, DMatrix<f64>, DMatrix<f64>);
-
-fn step_matrices(a: &DMatrix<f64>, rows: &[usize], h: f64) -> StepMatrices {
-    let (s, r) = (a.nrows(), rows.len());
-    let mut w = DMatrix::<f64>::zeros(s + 2 * r, s + 2 * r);
-    w.view_mut((0, 0), (s, s)).copy_from(&(a * h));
-    for (c, row) in rows.iter().enumerate() {
-        w[(*row, s + c)] = h;
-        w[(s + c, s + r + c)] = 1.0;
-    }
-    let e = w.exp();
-    (
-        e.view((0, 0), (s, s)).into_owned(),
-        e.view((0, s), (s, r)).into_owned(),
-        e.view((0, s + r), (s, r)).into_owned(),
-    )
 }

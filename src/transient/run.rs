@@ -9,6 +9,7 @@ use super::exact::Exact;
 use super::observe::{Event, take_chunk};
 use super::periodic_start::add_periodic_state;
 use super::plant::{Plant, PlantLaw, Temperature};
+use super::record::{Recorder, empty_simulation};
 use super::ros2::Ros2;
 use super::speed::SpeedProfile;
 use super::start::initial_state;
@@ -125,10 +126,17 @@ pub fn simulate(
     options: RunOptions,
     progress: &mut dyn FnMut(f64) -> bool,
 ) -> Result<Simulation, TransientError> {
-    simulate_observed(model, run, options, &mut |event| match event {
-        Event::Progress(f) => progress(f),
-        Event::Chunk(_) => true,
-    })
+    // Nobody reads the chunks: the run does not assemble them.
+    run_recorded(
+        model,
+        run,
+        options,
+        &mut |event| match event {
+            Event::Progress(f) => progress(f),
+            Event::Chunk(_) => true,
+        },
+        false,
+    )
 }
 
 /// Runs `run` on `model` like [`simulate`], reporting to `observer` the fraction done
@@ -139,6 +147,18 @@ pub fn simulate_observed(
     run: Run,
     options: RunOptions,
     observer: &mut dyn FnMut(Event) -> bool,
+) -> Result<Simulation, TransientError> {
+    run_recorded(model, run, options, observer, true)
+}
+
+/// [`simulate_observed`], sending [`Event::Chunk`]s only when `chunks` (the progress
+/// events are the same either way).
+fn run_recorded(
+    model: &Model,
+    run: Run,
+    options: RunOptions,
+    observer: &mut dyn FnMut(Event) -> bool,
+    chunks: bool,
 ) -> Result<Simulation, TransientError> {
     let [from_rpm, to_rpm] = run.speeds_rpm();
     let duration_s = run.duration_s;
@@ -242,6 +262,7 @@ pub fn simulate_observed(
     }
     let samples = (duration_s * options.rate_hz).round() as usize;
     let mut sim = empty_simulation(&plant, samples, settling);
+    let recorder = Recorder::new(&plant, samples);
     sim.warnings = warnings;
     let mut state = vec![0.0; plant.state_len];
     let mut next = 0;
@@ -261,19 +282,25 @@ pub fn simulate_observed(
         }
         budget.check(&plant, &solver)?;
         check_state(&plant, solver.t(), solver.y(), &profile)?;
-        while next < samples && t0 + next as f64 / options.rate_hz <= solver.t() {
-            let t = t0 + next as f64 / options.rate_hz;
+        while next < samples {
+            let since_start = next as f64 / options.rate_hz;
+            let t = t0 + since_start;
+            if t > solver.t() {
+                break;
+            }
             solver.interpolate(t, &mut state);
-            record(&plant, &profile, t, &state, next, &mut sim, &mut power);
-            sim.time_s[next] = next as f64 / options.rate_hz;
+            let power = chunks.then_some(power.as_mut_slice());
+            recorder.record(&profile, t, &state, next, &mut sim, power);
+            sim.time_s[next] = since_start;
             next += 1;
         }
         let done = next as f64 / samples as f64;
         if done - last_report >= 0.005 || (next == samples && reported < samples) {
             last_report = done;
-            let chunk = take_chunk(&sim, reported, next, &mut power);
+            let sent =
+                !chunks || observer(Event::Chunk(take_chunk(&sim, reported, next, &mut power)));
             reported = next;
-            if !observer(Event::Chunk(chunk)) || !observer(Event::Progress(0.1 + 0.9 * done)) {
+            if !sent || !observer(Event::Progress(0.1 + 0.9 * done)) {
                 return Err(TransientError::Cancelled { time_s: solver.t() });
             }
         }
@@ -411,92 +438,4 @@ fn check_state(
         }
     }
     Ok(())
-}
-
-fn empty_simulation(plant: &Plant, samples: usize, settling: Settling) -> Simulation {
-    let sys = &plant.system;
-    let thermal = plant.elements.iter().filter_map(|e| match &e.law {
-        PlantLaw::Rubber(r) if matches!(r.temperature, Temperature::Thermal { .. }) => {
-            Some((e.connection, vec![0.0; samples]))
-        }
-        _ => None,
-    });
-    Simulation {
-        node_names: sys.node_names.clone(),
-        reference_node: sys.reference_node,
-        speed_ratio: sys.speed_ratio.clone(),
-        time_s: vec![0.0; samples],
-        speed_rpm: vec![vec![0.0; samples]; sys.node_names.len()],
-        torque_nm: plant
-            .elements
-            .iter()
-            .zip(plant.output_rows.iter().copied())
-            .filter(|(_, (_, first))| *first)
-            .map(|(e, _)| (e.connection, vec![0.0; samples]))
-            .collect(),
-        power_loss_w: plant
-            .elements
-            .iter()
-            .zip(plant.output_rows.iter().copied())
-            .filter(|(_, (_, first))| *first)
-            .map(|(e, _)| (e.connection, 0.0))
-            .collect(),
-        temperature_c: thermal.collect(),
-        connection_names: sys.connection_names.clone(),
-        chains: plant
-            .elements
-            .iter()
-            .filter_map(|e| match &e.law {
-                PlantLaw::Rubber(r) => Some((e.connection, r.chain.clone())),
-                _ => None,
-            })
-            .collect(),
-        settling,
-        steps: (0, 0),
-        warnings: Vec::new(),
-    }
-}
-
-/// Writes sample `k` of every output from state `y` at time `t`; appends the
-/// instantaneous power of each element to `power`.
-fn record(
-    plant: &Plant,
-    profile: &SpeedProfile,
-    t: f64,
-    y: &[f64],
-    k: usize,
-    sim: &mut Simulation,
-    power_now: &mut [Vec<f64>],
-) {
-    let n = plant.n_dof;
-    let big_omega = profile.at(t).1;
-    for (node, (&dof, &ratio)) in plant
-        .system
-        .dof_of_node
-        .iter()
-        .zip(&plant.system.speed_ratio)
-        .enumerate()
-    {
-        sim.speed_rpm[node][k] = ratio.abs() * (big_omega + y[n + dof]) * 60.0 / TAU;
-    }
-    let samples = sim.time_s.len() as f64;
-    for (e, (row, first)) in plant.elements.iter().zip(plant.output_rows.iter().copied()) {
-        let state = plant.element_state(e, y, None);
-        if first {
-            sim.torque_nm[row].1[k] = state.torque_ref_nm / e.ratio;
-            power_now[row].push(state.power_w);
-        } else if let Some(last) = power_now[row].last_mut() {
-            *last += state.power_w;
-        }
-        sim.power_loss_w[row].1 += state.power_w / samples;
-    }
-    let mut thermal = sim.temperature_c.iter_mut();
-    for e in &plant.elements {
-        if let PlantLaw::Rubber(r) = &e.law
-            && let Temperature::Thermal { state, .. } = r.temperature
-            && let Some((_, temps)) = thermal.next()
-        {
-            temps[k] = y[state];
-        }
-    }
 }
