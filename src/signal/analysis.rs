@@ -185,15 +185,15 @@ pub fn analyse_with(
     };
     let stations_in = recording.speed_stations();
     let ratio = |node: &str| options.shaft_ratio.get(node).copied().unwrap_or(1.0);
-    let mut stations = Vec::with_capacity(stations_in.len());
+    // Every signal first (stations, then the relative speeds of the pairs wanted), so
+    // that the angle grid's interpolation taps are worked out once for all of them.
+    let mut signals: Vec<(String, Vec<f64>, f64)> = Vec::new();
     for (node, values) in &stations_in {
         // Issue 13: no NaN in a report; say what cannot be computed and why.
         if stats::mean(values) == 0.0 {
             return Err(SignalError::StandingStation((*node).to_string()));
         }
-        stations.push(cx.signal(node, values, stats::mean(values))?);
     }
-    let mut n_rel = Vec::new();
     for (i, (a, va)) in stations_in.iter().enumerate() {
         for (b, vb) in &stations_in[i + 1..] {
             let wanted = options.pairs.as_ref().is_none_or(|pairs| {
@@ -201,12 +201,26 @@ pub fn analyse_with(
                     .iter()
                     .any(|(x, y)| (x == a && y == b) || (x == b && y == a))
             });
-            if !wanted {
-                continue;
+            if wanted {
+                let rel = stats::relative_speed(va, vb, ratio(a) / ratio(b));
+                signals.push((format!("{a}-{b}"), rel, stats::mean(va)));
             }
-            let rel = stats::relative_speed(va, vb, ratio(a) / ratio(b));
-            n_rel.push(cx.signal(&format!("{a}-{b}"), &rel, stats::mean(va))?);
         }
+    }
+    let all: Vec<&[f64]> = stations_in
+        .iter()
+        .map(|(_, v)| &v[..])
+        .chain(signals.iter().map(|(_, v, _)| &v[..]))
+        .collect();
+    let angles = resample::resample_many(&cx.grid, &all, options.interpolation);
+    let mut angles = angles.into_iter();
+    let mut stations = Vec::with_capacity(stations_in.len());
+    for ((node, values), angle) in stations_in.iter().zip(angles.by_ref()) {
+        stations.push(cx.signal(node, values, angle, stats::mean(values))?);
+    }
+    let mut n_rel = Vec::with_capacity(signals.len());
+    for ((name, rel, ir_mean_rpm), angle) in signals.iter().zip(angles) {
+        n_rel.push(cx.signal(name, rel, angle, *ir_mean_rpm)?);
     }
     Ok(Analysis {
         reference: meta.reference.clone(),
@@ -221,16 +235,17 @@ pub fn analyse_with(
 }
 
 impl Context<'_> {
-    /// The statistics of one signal (time samples of the recording); `ir_mean_rpm` is
-    /// the speed the irregularity ratio is referred to.
+    /// The statistics of one signal (`values`: time samples of the recording; `angle`:
+    /// the same on the angle grid); `ir_mean_rpm` is the speed the irregularity ratio is
+    /// referred to.
     fn signal(
         &self,
         name: &str,
         values: &[f64],
+        angle: Vec<f64>,
         ir_mean_rpm: f64,
     ) -> Result<StationAnalysis, SignalError> {
         let spc = self.grid.samples_per_cycle;
-        let angle = resample::resample(&self.grid, values, self.options.interpolation);
         let (detrended, means) = orders::remove_trend(&angle, spc);
         let mean_speed_rpm = stats::mean(values);
         let cycle = orders::synchronous_average(&detrended, spc);

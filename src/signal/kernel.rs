@@ -88,22 +88,63 @@ fn kernel(x: f64) -> f64 {
     table[i] + f * (table[i + 1] - table[i])
 }
 
+/// Taps of the band-limited interpolant at one fractional sample index: the weights of
+/// the samples `first ..` (those inside the data) and their sum. They depend on the
+/// position and the signal's length only, so several signals of one recording share them.
+#[derive(Debug, Clone, Copy)]
+pub struct Taps {
+    first: usize,
+    count: usize,
+    weights: [f64; 2 * HALF_WIDTH],
+    total: f64,
+}
+
+impl Taps {
+    /// The taps at fractional sample index `position` of a signal of `len` samples.
+    pub fn new(len: usize, position: f64) -> Self {
+        let base = position.floor();
+        let i0 = base as i64;
+        let frac = position - base;
+        let lo = (i0 - HALF_WIDTH as i64 + 1).max(0);
+        let hi = (i0 + HALF_WIDTH as i64).min(len as i64 - 1);
+        let mut taps = Self {
+            first: lo as usize,
+            count: 0,
+            weights: [0.0; 2 * HALF_WIDTH],
+            total: 0.0,
+        };
+        for j in lo..=hi {
+            let w = kernel(frac + (i0 - j) as f64);
+            taps.weights[taps.count] = w;
+            taps.count += 1;
+            taps.total += w;
+        }
+        taps
+    }
+
+    /// The interpolant of `values` (of the length the taps were made for).
+    pub fn apply(&self, values: &[f64]) -> f64 {
+        if self.count == 0 {
+            return 0.0;
+        }
+        let window = &values[self.first..self.first + self.count];
+        let mut sum = 0.0;
+        for (w, v) in self.weights[..self.count].iter().zip(window) {
+            sum += w * v;
+        }
+        if self.total == 0.0 {
+            0.0
+        } else {
+            sum / self.total
+        }
+    }
+}
+
 /// The band-limited interpolant of uniformly sampled `values` at fractional sample
 /// index `position`. Taps that fall outside the data are left out and the weights are
 /// renormalised to sum 1 (so a constant is reproduced exactly everywhere).
 pub fn interpolate(values: &[f64], position: f64) -> f64 {
-    let base = position.floor();
-    let i0 = base as i64;
-    let frac = position - base;
-    let lo = (i0 - HALF_WIDTH as i64 + 1).max(0);
-    let hi = (i0 + HALF_WIDTH as i64).min(values.len() as i64 - 1);
-    let (mut sum, mut weights) = (0.0, 0.0);
-    for j in lo..=hi {
-        let w = kernel(frac + (i0 - j) as f64);
-        sum += w * values[j as usize];
-        weights += w;
-    }
-    if weights == 0.0 { 0.0 } else { sum / weights }
+    Taps::new(values.len(), position).apply(values)
 }
 
 /// Linear interpolation at fractional sample index `position` (for comparison only:
