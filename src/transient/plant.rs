@@ -447,6 +447,20 @@ impl Plant {
 }
 
 impl Plant {
+    /// State index of every self-heating rubber stage's temperature, in element order.
+    pub fn thermal_states(&self) -> Vec<usize> {
+        self.elements
+            .iter()
+            .filter_map(|e| match &e.law {
+                PlantLaw::Rubber(r) => match r.temperature {
+                    Temperature::Thermal { state, .. } => Some(state),
+                    Temperature::Fixed(_) => None,
+                },
+                _ => None,
+            })
+            .collect()
+    }
+
     /// Start temperature of the rubber stage of connection `connection`, °C.
     pub fn system_temperature(&self, connection: usize) -> f64 {
         self.start_temperature_c

@@ -77,17 +77,7 @@ impl<'a> Recorder<'a> {
                 .zip(&sys.speed_ratio)
                 .map(|(&dof, ratio)| (plant.n_dof + dof, ratio.abs()))
                 .collect(),
-            thermal: plant
-                .elements
-                .iter()
-                .filter_map(|e| match &e.law {
-                    PlantLaw::Rubber(r) => match r.temperature {
-                        Temperature::Thermal { state, .. } => Some(state),
-                        Temperature::Fixed(_) => None,
-                    },
-                    _ => None,
-                })
-                .collect(),
+            thermal: plant.thermal_states(),
             samples: samples as f64,
         }
     }

@@ -340,17 +340,7 @@ fn settle(
         budget,
     } = course;
     let n = plant.n_dof;
-    let held: Vec<usize> = plant
-        .elements
-        .iter()
-        .filter_map(|e| match &e.law {
-            PlantLaw::Rubber(r) => match r.temperature {
-                Temperature::Thermal { state, .. } => Some(state),
-                Temperature::Fixed(_) => None,
-            },
-            _ => None,
-        })
-        .collect();
+    let held = plant.thermal_states();
     let mut previous: Vec<f64> = solver.y()[n..2 * n].to_vec();
     let mut settling = Settling {
         cycles: 0,
