@@ -14,7 +14,7 @@
 //!   and prints Tables 9–13 beside the paper's, with the gaps.
 //! - `seed000`: the cng-genset order-3 critical speed at restricted and full load.
 
-use torsim::calibrate::{Knob, Target, calibrate, evaluate, parameter_value};
+use torsim::calibrate::{Knob, Target, calibrate, evaluate, parameter_value, set_parameter};
 use torsim::compare::{compare_regimes, model_regimes};
 use torsim::modal::modes;
 use torsim::model::{Model, parse_model, presets};
@@ -134,10 +134,9 @@ fn with_rubber(model: &Model, youngs_ratio: f64, psi: f64) -> Model {
     let mut m = model.clone();
     for name in ["connection.b.stiffness", "connection.c.stiffness"] {
         let k = value(&m, name);
-        torsim::calibrate::set_parameter(&mut m, model, name, k * youngs_ratio).expect("knob");
+        set_parameter(&mut m, model, name, k * youngs_ratio).expect("knob");
     }
-    torsim::calibrate::set_parameter(&mut m, model, "connection.b.psi,connection.c.psi", psi)
-        .expect("knob");
+    set_parameter(&mut m, model, "connection.b.psi,connection.c.psi", psi).expect("knob");
     m
 }
 

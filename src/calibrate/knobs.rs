@@ -75,11 +75,15 @@ pub fn set_parameter(
         }
         return Ok(());
     }
+    let unknown = || {
+        CalibrateError::Input(format!(
+            "knob `{parameter}`: no such value in the model (see calibrate::Knob)"
+        ))
+    };
     match parameter {
-        "engine.pressure_factor" if model.engine.is_some() => {
-            if let Some(e) = model.engine.as_mut() {
-                e.pressure_scale = Some(vec![value; e.cylinders as usize]);
-            }
+        "engine.pressure_factor" => {
+            let e = model.engine.as_mut().ok_or_else(unknown)?;
+            e.pressure_scale = Some(vec![value; e.cylinders as usize]);
         }
         "operation.regime_speed_factor" => {
             for (r, b) in model
@@ -91,13 +95,7 @@ pub fn set_parameter(
                 r.speed_rpm = b.speed_rpm * value;
             }
         }
-        _ => {
-            *value_mut(model, parameter).ok_or_else(|| {
-                CalibrateError::Input(format!(
-                    "knob `{parameter}`: no such value in the model (see calibrate::Knob)"
-                ))
-            })? = value;
-        }
+        _ => *value_mut(model, parameter).ok_or_else(unknown)? = value,
     }
     Ok(())
 }

@@ -188,13 +188,14 @@ pub fn analyse_with(
     // Every signal first (stations, then the relative speeds of the pairs wanted), so
     // that the angle grid's interpolation taps are worked out once for all of them.
     let mut signals: Vec<(String, Vec<f64>, f64)> = Vec::new();
-    for (node, values) in &stations_in {
+    let station_means: Vec<f64> = stations_in.iter().map(|(_, v)| stats::mean(v)).collect();
+    for ((node, _), mean) in stations_in.iter().zip(&station_means) {
         // Issue 13: no NaN in a report; say what cannot be computed and why.
-        if stats::mean(values) == 0.0 {
+        if *mean == 0.0 {
             return Err(SignalError::StandingStation((*node).to_string()));
         }
     }
-    for (i, (a, va)) in stations_in.iter().enumerate() {
+    for (i, ((a, va), mean_a)) in stations_in.iter().zip(&station_means).enumerate() {
         for (b, vb) in &stations_in[i + 1..] {
             let wanted = options.pairs.as_ref().is_none_or(|pairs| {
                 pairs
@@ -203,7 +204,7 @@ pub fn analyse_with(
             });
             if wanted {
                 let rel = stats::relative_speed(va, vb, ratio(a) / ratio(b));
-                signals.push((format!("{a}-{b}"), rel, stats::mean(va)));
+                signals.push((format!("{a}-{b}"), rel, *mean_a));
             }
         }
     }
@@ -215,8 +216,10 @@ pub fn analyse_with(
     let angles = resample::resample_many(&cx.grid, &all, options.interpolation);
     let mut angles = angles.into_iter();
     let mut stations = Vec::with_capacity(stations_in.len());
-    for ((node, values), angle) in stations_in.iter().zip(angles.by_ref()) {
-        stations.push(cx.signal(node, values, angle, stats::mean(values))?);
+    for (((node, values), mean), angle) in
+        stations_in.iter().zip(&station_means).zip(angles.by_ref())
+    {
+        stations.push(cx.signal(node, values, angle, *mean)?);
     }
     let mut n_rel = Vec::with_capacity(signals.len());
     for ((name, rel, ir_mean_rpm), angle) in signals.iter().zip(angles) {
