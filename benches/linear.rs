@@ -53,6 +53,7 @@ fn rubber(from: &str, to: &str, k: f64, psi: f64, frequency_poly: Option<Poly>) 
             temperature_stiffness_poly: None,
             temperature_damping_poly: None,
             thermal: None,
+            rating: None,
         }),
     }
 }
@@ -296,7 +297,7 @@ fn cheap_results(model: &Model) {
 
 fn edit_group(c: &mut Criterion) {
     let mut group = c.benchmark_group("edit_to_cheap_results");
-    let presets: Vec<(String, Model)> = ["cng-genset", "test-rig-70sh"]
+    let presets: Vec<(String, Model)> = ["cng-genset", "test-rig-70sh", "genset-20dof"]
         .iter()
         .map(|name| {
             let p = torsim::model::presets::preset(name).expect("preset");

@@ -90,6 +90,7 @@ pub(crate) fn hysteretic(
         temperature_stiffness_poly: None,
         temperature_damping_poly: None,
         thermal: None,
+        rating: None,
     };
     let loss = |z: num_complex::Complex64| z.im / z.re;
     for _ in 0..MAX_PASSES {

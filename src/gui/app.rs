@@ -40,6 +40,8 @@ pub struct Results {
     pub generation: u64,
     /// Modes, Campbell diagram and damped modes.
     pub campbell: Option<Arc<(System, Campbell, Vec<DampedMode>)>>,
+    /// The request the Campbell diagram on screen answers.
+    pub campbell_generation: u64,
     /// Forced response.
     pub response: Option<Arc<Response>>,
     /// The finished time run.
@@ -101,25 +103,32 @@ pub struct TorsimApp {
     pub status: String,
     /// Pending file dialog results.
     pub files: files::FileDialogs,
-    /// The window was asked to close with unsaved edits: the prompt is showing.
-    pub close_prompt: bool,
+    /// Unsaved edits about to be discarded (another model, or closing): the question.
+    pub unsaved: Option<super::unsaved::Prompt>,
     /// The user chose to discard unsaved edits and close.
     pub close_confirmed: bool,
+    /// Recently opened or saved model files, the latest first.
+    pub recent: Vec<PathBuf>,
+    /// The autosave of unsaved edits ([`super::recovery`]).
+    pub recovery: super::recovery::Recovery,
+    /// Counts the model's changes (edits, undo, redo, another model); the autosave
+    /// writes when it moves.
+    pub revision: u64,
     /// A save or export that would replace an open file, waiting for the user's answer.
     pub confirm: Option<super::overwrite::Confirm>,
     /// The diagnosis tab: recordings, the run, the report.
     pub diagnosis: super::diagnosis::DiagnosisState,
+    /// The title last sent to the window (sent again only when it changes).
+    shown_title: Option<String>,
+    /// Edit-to-plot latency, logged when asked for ([`super::latency`]).
+    latency: super::latency::Latency,
     worker: Worker,
 }
 
 impl TorsimApp {
     /// A window on `model` (from `path`, if it came from a file); `wake` repaints.
     pub fn new(model: Model, path: Option<PathBuf>, wake: impl Fn() + Send + 'static) -> Self {
-        let trace_speed_rpm = model
-            .operation
-            .operating_range_rpm
-            .or(model.operation.speed_range_rpm)
-            .map_or(1500.0, |[a, b]| 0.5 * (a + b));
+        let trace_speed_rpm = default_trace_speed_rpm(&model);
         let mut app = Self {
             model,
             path,
@@ -140,10 +149,15 @@ impl TorsimApp {
             traces: TraceState::default(),
             status: String::new(),
             files: files::FileDialogs::default(),
-            close_prompt: false,
+            unsaved: None,
             close_confirmed: false,
+            recent: Vec::new(),
+            recovery: super::recovery::Recovery::default(),
+            revision: 0,
             confirm: None,
             diagnosis: Default::default(),
+            shown_title: None,
+            latency: super::latency::Latency::from_env(),
             worker: Worker::start(wake),
         };
         app.request();
@@ -197,7 +211,11 @@ impl TorsimApp {
             }
             self.redo.clear();
             self.dirty = true;
+            self.revision += 1;
             self.request();
+            if self.invalid.is_none() {
+                self.latency.edited(self.results.generation);
+            }
         }
         if !in_progress {
             self.end_gesture();
@@ -219,6 +237,7 @@ impl TorsimApp {
         if let Some(previous) = self.undo.pop() {
             self.redo.push(std::mem::replace(&mut self.model, previous));
             self.dirty = true;
+            self.revision += 1;
             self.request();
         }
     }
@@ -229,6 +248,7 @@ impl TorsimApp {
         if let Some(next) = self.redo.pop() {
             self.undo.push(std::mem::replace(&mut self.model, next));
             self.dirty = true;
+            self.revision += 1;
             self.request();
         }
     }
@@ -238,7 +258,10 @@ impl TorsimApp {
         while let Ok(r) = self.worker.results.try_recv() {
             let current = self.results.generation;
             match r {
-                SimResult::Campbell(g, c) if g == current => self.results.campbell = Some(c),
+                SimResult::Campbell(g, c) if g == current => {
+                    self.results.campbell = Some(c);
+                    self.results.campbell_generation = g;
+                }
                 SimResult::Response(g, r) if g == current => self.results.response = Some(r),
                 SimResult::Trace(g, t) if g == current => {
                     self.results.trace = Some(t);
@@ -282,45 +305,17 @@ pub const SESSION_MODEL: &str = "torsim.model_toml";
 pub const SESSION_PATH: &str = "torsim.model_path";
 /// Storage key: the last session had unsaved edits.
 pub const SESSION_DIRTY: &str = "torsim.dirty";
+/// Storage key of the recent files, one path per line.
+pub const SESSION_RECENT: &str = "torsim.recent";
 
-impl TorsimApp {
-    /// Closing with unsaved edits asks first: save, discard, or stay.
-    fn close_prompt_ui(&mut self, ui: &mut egui::Ui) {
-        let ctx = ui.ctx().clone();
-        if ctx.input(|i| i.viewport().close_requested()) && self.dirty && !self.close_confirmed {
-            ctx.send_viewport_cmd(egui::ViewportCommand::CancelClose);
-            self.close_prompt = true;
-        }
-        if !self.close_prompt {
-            return;
-        }
-        egui::Window::new("Unsaved changes")
-            .collapsible(false)
-            .resizable(false)
-            .show(&ctx, |ui| {
-                ui.label(format!("{} has unsaved changes.", self.model.name));
-                ui.horizontal(|ui| {
-                    if ui.button("Save").clicked() {
-                        match self.path.clone() {
-                            Some(path) => files::save_to(self, path),
-                            None => self.status = "choose File → Save as… first".into(),
-                        }
-                        self.close_prompt = false;
-                        if !self.dirty {
-                            ctx.send_viewport_cmd(egui::ViewportCommand::Close);
-                        }
-                    }
-                    if ui.button("Discard and close").clicked() {
-                        self.close_confirmed = true;
-                        self.close_prompt = false;
-                        ctx.send_viewport_cmd(egui::ViewportCommand::Close);
-                    }
-                    if ui.button("Cancel").clicked() {
-                        self.close_prompt = false;
-                    }
-                });
-            });
-    }
+/// The speed of a steady time run on a new model, rpm: the middle of the operating
+/// range, else of the speed range, else 1500.
+pub fn default_trace_speed_rpm(model: &Model) -> f64 {
+    model
+        .operation
+        .operating_range_rpm
+        .or(model.operation.speed_range_rpm)
+        .map_or(1500.0, |[a, b]| 0.5 * (a + b))
 }
 
 impl eframe::App for TorsimApp {
@@ -335,18 +330,33 @@ impl eframe::App for TorsimApp {
                 .unwrap_or_default(),
         );
         storage.set_string(SESSION_DIRTY, self.dirty.to_string());
+        let recent: Vec<String> = self
+            .recent
+            .iter()
+            .map(|p| p.display().to_string())
+            .collect();
+        storage.set_string(SESSION_RECENT, recent.join("\n"));
     }
 
     fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
-        self.close_prompt_ui(ui);
+        self.latency.frame();
+        super::unsaved::close_or_ask(self, ui.ctx());
         self.receive();
         files::poll(self, ui.ctx());
         export::poll(self, ui.ctx());
         recordings::poll(self);
         self.diagnosis.poll();
         super::overwrite::ui(self, ui.ctx());
-        ui.ctx()
-            .send_viewport_cmd(egui::ViewportCommand::Title(self.title()));
+        super::unsaved::ui(self, ui.ctx());
+        super::recovery::tick(self, ui.ctx());
+        // A viewport command repaints the window: sent on every frame, the title kept an
+        // idle window redrawing at full rate (issue 16: 183 % of two cores measured).
+        let title = self.title();
+        if self.shown_title.as_deref() != Some(title.as_str()) {
+            ui.ctx()
+                .send_viewport_cmd(egui::ViewportCommand::Title(title.clone()));
+            self.shown_title = Some(title);
+        }
         let undo = egui::KeyboardShortcut::new(egui::Modifiers::COMMAND, egui::Key::Z);
         let redo = egui::KeyboardShortcut::new(
             egui::Modifiers::COMMAND | egui::Modifiers::SHIFT,
@@ -379,5 +389,8 @@ impl eframe::App for TorsimApp {
             .default_size(360.0)
             .show(ui, |ui| editor::driveline_ui(self, ui));
         egui::CentralPanel::default().show(ui, |ui| plots::central_ui(self, ui));
+        if self.tab == Tab::Campbell && self.results.campbell.is_some() {
+            self.latency.drawn(self.results.campbell_generation);
+        }
     }
 }

@@ -1,6 +1,7 @@
-//! The menu bar and files: open and save models (TOML per the spec, written atomically),
-//! presets, undo and redo. File dialogs run on their own thread so the window never
-//! freezes; their answer arrives over a channel.
+//! The menu bar and files: new, open (also recent files) and save models (TOML per the
+//! spec, written atomically), presets, undo and redo. File dialogs run on their own thread
+//! so the window never freezes; their answer arrives over a channel. Whatever replaces
+//! the model asks first when it has unsaved edits ([`super::unsaved`]).
 
 use super::app::TorsimApp;
 use crossbeam_channel::{Receiver, bounded};
@@ -40,22 +41,85 @@ pub fn save_to(app: &mut TorsimApp, path: PathBuf) {
     match save_model_file(&app.model, &path) {
         Ok(()) => {
             app.status = format!("saved {}", path.display());
+            remember_recent(app, &path);
             app.path = Some(path);
             app.dirty = false;
+            super::recovery::discard(app);
         }
         Err(e) => app.status = format!("could not save {}: {e}", path.display()),
     }
 }
 
-/// Replaces the model (a file opened or a preset chosen); undo history starts afresh.
+/// Opens the Save as… dialog; its answer is taken by [`poll`].
+pub fn save_as(app: &mut TorsimApp, ctx: &egui::Context) {
+    let name = app
+        .path
+        .as_ref()
+        .and_then(|p| p.file_name())
+        .map_or("model.toml".into(), |n| n.to_string_lossy().into_owned());
+    app.files.save = Some(dialog(
+        move |d| d.set_file_name(name).save_file(),
+        ctx.clone(),
+    ));
+}
+
+/// True while the Save as… dialog is open.
+pub fn save_dialog_open(app: &TorsimApp) -> bool {
+    app.files.save.is_some()
+}
+
+/// The most recent files kept in the File menu: 8.
+pub const RECENT_FILES: usize = 8;
+
+/// Puts `path` first in the recent files.
+fn remember_recent(app: &mut TorsimApp, path: &std::path::Path) {
+    app.recent.retain(|p| p != path);
+    app.recent.insert(0, path.to_path_buf());
+    app.recent.truncate(RECENT_FILES);
+}
+
+/// Replaces the model (a file opened, a preset or a new model); undo history starts
+/// afresh, and what belonged to the old model goes with it (issue 16): its results, the
+/// selections, the open recording, the diagnosis and its report, the plots' zoom. Call
+/// it through [`super::unsaved::replace_or_ask`], which asks before unsaved edits go.
 pub fn replace_model(app: &mut TorsimApp, model: torsim::model::Model, path: Option<PathBuf>) {
+    if let Some(p) = &path {
+        remember_recent(app, p);
+    }
     app.model = model;
     app.path = path;
     app.dirty = false;
     app.undo.clear();
     app.redo.clear();
     app.results = Default::default();
+    app.selected = None;
+    app.selected_mode = 0;
+    app.stations.clear();
+    app.plots = super::plots::PlotState {
+        model_epoch: app.plots.model_epoch + 1,
+        amplitude_deg: app.plots.amplitude_deg,
+        ..Default::default()
+    };
+    app.traces = Default::default();
+    app.diagnosis.clear_for_new_model();
+    app.trace_speed_rpm = super::app::default_trace_speed_rpm(&app.model);
+    super::recovery::discard(app);
     app.request();
+}
+
+/// Reads `path` off the GUI thread's way (a model file is small) and shows it, asking
+/// first when there are unsaved edits.
+fn open_path(app: &mut TorsimApp, path: PathBuf) {
+    match read_model_file(&path) {
+        Ok(model) => {
+            let status = format!("opened {}", path.display());
+            super::unsaved::replace_or_ask(app, model, Some(path), status);
+        }
+        Err(e) => {
+            app.recent.retain(|p| *p != path);
+            app.status = format!("could not open: {e}");
+        }
+    }
 }
 
 /// Takes the answers of finished dialogs.
@@ -65,13 +129,7 @@ pub fn poll(app: &mut TorsimApp, ctx: &egui::Context) {
     {
         app.files.open = None;
         if let Some(path) = answer {
-            match read_model_file(&path) {
-                Ok(model) => {
-                    replace_model(app, model, Some(path.clone()));
-                    app.status = format!("opened {}", path.display());
-                }
-                Err(e) => app.status = format!("could not open: {e}"),
-            }
+            open_path(app, path);
         }
     }
     if let Some(rx) = &app.files.save
@@ -89,8 +147,33 @@ pub fn poll(app: &mut TorsimApp, ctx: &egui::Context) {
 pub fn menu_ui(app: &mut TorsimApp, ui: &mut egui::Ui) {
     egui::MenuBar::new().ui(ui, |ui| {
         ui.menu_button("File", |ui| {
+            if ui
+                .button("New")
+                .on_hover_text("a two-inertia driveline to build on")
+                .clicked()
+            {
+                new_model(app);
+            }
             if ui.button("Open…").clicked() {
                 app.files.open = Some(dialog(|d| d.pick_file(), ui.ctx().clone()));
+            }
+            ui.menu_button("Open recent", |ui| {
+                if app.recent.is_empty() {
+                    ui.label("no recent files");
+                }
+                for path in app.recent.clone() {
+                    if ui.button(path.display().to_string()).clicked() {
+                        open_path(app, path);
+                    }
+                }
+            });
+            if super::recovery::can_recover(app)
+                && ui
+                    .button("Recover unsaved edits…")
+                    .on_hover_text("the edits of a torsim window that ended without saving")
+                    .clicked()
+            {
+                super::recovery::recover(app);
             }
             if ui.button("Open recording…").clicked() {
                 super::recordings::open_dialog(app, ui.ctx());
@@ -98,19 +181,11 @@ pub fn menu_ui(app: &mut TorsimApp, ui: &mut egui::Ui) {
             if ui.button("Save").clicked() {
                 match app.path.clone() {
                     Some(path) => save_to(app, path),
-                    None => {
-                        app.files.save = Some(dialog(
-                            |d| d.set_file_name("model.toml").save_file(),
-                            ui.ctx().clone(),
-                        ))
-                    }
+                    None => save_as(app, ui.ctx()),
                 }
             }
             if ui.button("Save as…").clicked() {
-                app.files.save = Some(dialog(
-                    |d| d.set_file_name("model.toml").save_file(),
-                    ui.ctx().clone(),
-                ));
+                save_as(app, ui.ctx());
             }
             ui.separator();
             if ui.button("Export plot as CSV…").clicked() {
@@ -125,11 +200,11 @@ pub fn menu_ui(app: &mut TorsimApp, ui: &mut egui::Ui) {
         });
         ui.menu_button("Presets", |ui| {
             for p in PRESETS {
-                if ui.button(p.name).clicked()
+                if ui.button(p.name).on_hover_text(p.summary).clicked()
                     && let Ok(model) = parse_model(p.text, p.name)
                 {
-                    replace_model(app, model, None);
-                    app.status = format!("preset {}", p.name);
+                    let status = format!("preset {}", p.name);
+                    super::unsaved::replace_or_ask(app, model, None, status);
                 }
             }
         });
@@ -151,4 +226,19 @@ pub fn menu_ui(app: &mut TorsimApp, ui: &mut egui::Ui) {
             }
         });
     });
+}
+
+/// The preset File → New starts from: a two-inertia driveline.
+pub const NEW_MODEL_PRESET: &str = "two-inertia";
+
+/// File → New: the two-inertia preset, named "untitled", with no file.
+pub fn new_model(app: &mut TorsimApp) {
+    let Some(p) = torsim::model::presets::preset(NEW_MODEL_PRESET) else {
+        return;
+    };
+    if let Ok(mut model) = parse_model(p.text, p.name) {
+        model.name = "untitled".into();
+        let status = "new model: two inertias and a shaft; add to it in the driveline panel";
+        super::unsaved::replace_or_ask(app, model, None, status.into());
+    }
 }

@@ -9,16 +9,21 @@ pub mod diagnosis;
 pub mod editor;
 pub mod export;
 pub mod files;
+pub mod help;
+pub mod latency;
 pub mod overwrite;
 pub mod plots;
 pub mod recording_job;
 pub mod recordings;
+pub mod recovery;
 pub mod schematic;
 pub mod spectrogram;
+pub mod startup;
 pub mod trace_data;
 pub mod trace_job;
 pub mod trace_series;
 pub mod trace_state;
+pub mod unsaved;
 pub mod worker;
 
 #[cfg(test)]
@@ -34,38 +39,30 @@ mod tests_edit_cases;
 #[cfg(test)]
 mod tests_edit_structure;
 #[cfg(test)]
+mod tests_idle;
+#[cfg(test)]
 mod tests_modal_damping;
 #[cfg(test)]
 mod tests_overwrite;
 #[cfg(test)]
 mod tests_plots;
 #[cfg(test)]
+mod tests_recovery;
+#[cfg(test)]
 mod tests_shaft;
 #[cfg(test)]
+mod tests_teaching;
+#[cfg(test)]
 mod tests_traces;
+#[cfg(test)]
+mod tests_unsaved;
 
 use crate::cli::error::CliError;
 use std::path::PathBuf;
 
-/// The last session's model, its file and whether it had unsaved edits, if stored.
-fn restore(
-    storage: Option<&dyn eframe::Storage>,
-) -> Option<(torsim::model::Model, Option<PathBuf>, bool)> {
-    let storage = storage?;
-    let text = storage.get_string(app::SESSION_MODEL)?;
-    let model = torsim::model::parse_model(&text, "last session").ok()?;
-    let path = storage
-        .get_string(app::SESSION_PATH)
-        .filter(|p| !p.is_empty())
-        .map(PathBuf::from);
-    let dirty = storage
-        .get_string(app::SESSION_DIRTY)
-        .is_some_and(|d| d == "true");
-    Some((model, path, dirty))
-}
-
-/// Opens the window on `model_arg` (a file or `preset:NAME`); without one, on the last
-/// session's model (unsaved edits included), else the default preset.
+/// Opens the window on `model_arg` (a file or `preset:NAME`); without one, on an ended
+/// window's unsaved edits, the last session's model, else the default preset
+/// ([`startup`]).
 pub fn run(model_arg: Option<String>) -> Result<(), CliError> {
     let explicit = model_arg.is_some();
     let arg =
@@ -84,16 +81,12 @@ pub fn run(model_arg: Option<String>) -> Result<(), CliError> {
         Box::new(move |cc| {
             let ctx = cc.egui_ctx.clone();
             let wake = move || ctx.request_repaint();
-            let restored = if explicit { None } else { restore(cc.storage) };
-            Ok(Box::new(match restored {
-                Some((model, path, dirty)) => {
-                    let mut app = app::TorsimApp::new(model, path, wake);
-                    app.dirty = dirty;
-                    app.status = "restored the last session".into();
-                    app
-                }
-                None => app::TorsimApp::new(model, path, wake),
-            }))
+            let named = explicit.then(|| (model.clone(), path.clone()));
+            let session = startup::last_session(cc.storage);
+            let dir = recovery::recovery_dir();
+            let mut app = startup::open_app(named, (model, path), session, dir.as_deref(), wake);
+            app.recent = startup::recent_files(cc.storage);
+            Ok(Box::new(app))
         }),
     )
     .map_err(|e| CliError::failed(anyhow::anyhow!("cannot open the window: {e}")))

@@ -189,8 +189,8 @@ fn unsaved_edits_survive_a_restart() {
     h.state_mut().commit(before);
     let mut storage = MemoryStorage::default();
     eframe::App::save(h.state_mut(), &mut storage);
-    let (model, path, dirty) = super::restore(Some(&storage)).expect("restored");
+    let (model, path, dirty) = super::startup::last_session(Some(&storage)).expect("restored");
     assert_eq!(model, h.state().model);
     assert!(dirty && path.is_none());
-    assert!(super::restore(Some(&MemoryStorage::default())).is_none());
+    assert!(super::startup::last_session(Some(&MemoryStorage::default())).is_none());
 }

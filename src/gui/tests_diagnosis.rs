@@ -199,6 +199,10 @@ fn a_report_shows_and_accept_is_one_undo_step() {
     h.step();
     assert_eq!(h.state().model, user);
     assert!(
+        h.query_by_label_contains("Accepted:").is_none(),
+        "the accepted line goes with the undo"
+    );
+    assert!(
         !h.get_by_label("Accept verdict")
             .accesskit_node()
             .is_disabled()

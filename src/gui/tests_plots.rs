@@ -253,7 +253,7 @@ fn response_quantity_switches_to_the_library_torque() {
 
 /// The mode-shape tab names the element holding most of mode 1's strain energy — the
 /// coupling (seed 000: the 26 Hz mode is the coupling mode) — with the library's share,
-/// and the animation pauses.
+/// and the animation, paused on open (an idle window is idle), plays and pauses.
 #[test]
 fn mode_tab_shows_the_strain_energy_and_pauses() {
     let mut h = harness();
@@ -275,6 +275,9 @@ fn mode_tab_shows_the_strain_energy_and_pauses() {
         "strain energy mostly in coupling ({:.0} %)",
         100.0 * share
     ));
+    assert!(!h.state().plots.playing);
+    h.get_by_label("Play").click();
+    h.run_steps(2);
     assert!(h.state().plots.playing);
     h.get_by_label("Pause").click();
     h.run_steps(2);

@@ -195,11 +195,14 @@ mod tests {
     use crate::physics::OperatingPoint;
 
     /// On every mode of every preset, the iteration's eigenvalue is the one the full
-    /// state-matrix decomposition picks, to 1e-8 relative. The Schur decomposition is the
+    /// state-matrix decomposition picks, to 5e-8 relative. The Schur decomposition is the
     /// less accurate of the two here: its error is ~ε‖A‖ times the eigenvalue's condition,
-    /// and ‖A‖ = max k/J of the crank train is ~1e4 times the coupling mode's |λ|² — the
-    /// cng-genset coupling mode differs by 1.2e-9. T(λ) at the iteration's λ is checked to be
-    /// singular to 1e-13 (σ_min/σ_max), and more so than at Schur's (seen: 0 vs 5e-15–2e-10).
+    /// and ‖A‖ = max k/J of a crank train or a stiff gear mesh on a light pinion is 1e3–1e4
+    /// times a low mode's |λ|². Measured: the cng-genset coupling mode differs by 1.2e-9,
+    /// genset-20dof's 232 Hz mode (coupling and gearbox, its stages' loss far from
+    /// proportional) by 1.2e-8. T(λ) at the iteration's λ is checked to be singular to
+    /// 1e-13 (σ_min/σ_max), and more so than at Schur's (seen: 0 vs 5e-15–2e-10), so the
+    /// gap is Schur's.
     #[test]
     fn equals_the_state_matrix_eigenvalue_on_every_preset_mode() {
         let mut lu = LuWorkspace::default();
@@ -220,7 +223,7 @@ mod tests {
                     .expect("converges");
                 let full = nearest_state_eigenvalue(&system, &k, &c, omega).expect("eigenvalue");
                 assert!(
-                    (fast - full).norm() <= 1e-8 * full.norm(),
+                    (fast - full).norm() <= 5e-8 * full.norm(),
                     "{} mode at {f:.3} Hz: {fast} vs {full}",
                     preset.name
                 );

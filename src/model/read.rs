@@ -190,6 +190,7 @@ fn connection(t: &Tab) -> Result<Connection, ModelError> {
                 "temperature_stiffness_poly_range",
                 "temperature_damping_poly",
                 "temperature_damping_poly_range",
+                "rating",
             ],
             rubber,
         ),
@@ -292,6 +293,7 @@ fn rubber(t: &Tab) -> Result<ConnectionKind, ModelError> {
         temperature_stiffness_poly: temp_k?,
         temperature_damping_poly: temp_d?,
         thermal,
+        rating: super::rating::read(t)?,
     }))
 }
 

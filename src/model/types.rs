@@ -201,6 +201,8 @@ pub struct RubberStage {
     pub temperature_damping_poly: Option<Poly>,
     /// Optional self-heating model (time domain).
     pub thermal: Option<Thermal>,
+    /// The catalogue's ratings (`rating = { … }`, [`super::rating`]), if given.
+    pub rating: Option<super::rating::CouplingRating>,
 }
 
 /// `kind = "gear"`: a gear stage.

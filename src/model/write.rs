@@ -200,6 +200,9 @@ fn rubber(out: &mut String, r: &RubberStage) {
         ];
         kv(out, "thermal", inline(&fields));
     }
+    if let Some(rating) = &r.rating {
+        kv(out, "rating", inline(&super::rating::fields(rating, num)));
+    }
 }
 
 fn engine(out: &mut String, e: &Engine) {

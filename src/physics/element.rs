@@ -298,6 +298,7 @@ mod tests {
             temperature_stiffness_poly: None,
             temperature_damping_poly: None,
             thermal: None,
+            rating: None,
         }
     }
 

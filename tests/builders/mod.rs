@@ -49,6 +49,7 @@ pub fn rubber(from: &str, to: &str, k: f64, psi: f64) -> Connection {
             temperature_stiffness_poly: None,
             temperature_damping_poly: None,
             thermal: None,
+            rating: None,
         }),
     }
 }
@@ -93,6 +94,7 @@ pub fn seed000_stage(elements: RubberElements, psi: f64, temperature_c: f64) -> 
             range: None,
         }),
         thermal: None,
+        rating: None,
     }
 }
 

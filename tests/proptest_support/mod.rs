@@ -9,8 +9,8 @@
 
 use proptest::prelude::*;
 use torsim::model::{
-    Connection, ConnectionKind, Engine, Gear, Harmonic, HarmonicAmplitude, Inertia, Load,
-    LoadPressure, ModalDamping, Model, Operation, Poly, Pressure, PressureCurve, Regime,
+    Connection, ConnectionKind, CouplingRating, Engine, Gear, Harmonic, HarmonicAmplitude, Inertia,
+    Load, LoadPressure, ModalDamping, Model, Operation, Poly, Pressure, PressureCurve, Regime,
     RubberElements, RubberStage, RubberStiffness, Shaft, Thermal,
 };
 use torsim::recording::{Channel, ChannelKind, Recording, RecordingMeta, RunKind};
@@ -81,22 +81,47 @@ fn rubber() -> impl Strategy<Value = RubberStage> {
         prop::option::of(poly(true)),
         prop::option::of(poly(true)),
         prop::option::of(thermal),
+        prop::option::of(rating()),
     )
-        .prop_map(|(stiffness, psi, temp, amp, freq, ts, td, thermal)| {
-            let elements = matches!(stiffness, RubberStiffness::Elements(_));
-            RubberStage {
-                stiffness,
-                psi,
-                temperature_c: temp,
-                amplitude_poly: amp.filter(|_| elements),
-                amplitude_form: Default::default(),
-                frequency_poly: freq,
-                frequency_power_law: None,
-                temperature_stiffness_poly: ts,
-                temperature_damping_poly: td,
-                thermal,
-            }
-        })
+        .prop_map(
+            |(stiffness, psi, temp, amp, freq, ts, td, thermal, rating)| {
+                let elements = matches!(stiffness, RubberStiffness::Elements(_));
+                RubberStage {
+                    stiffness,
+                    psi,
+                    temperature_c: temp,
+                    amplitude_poly: amp.filter(|_| elements),
+                    amplitude_form: Default::default(),
+                    frequency_poly: freq,
+                    frequency_power_law: None,
+                    temperature_stiffness_poly: ts,
+                    temperature_damping_poly: td,
+                    thermal,
+                    rating,
+                }
+            },
+        )
+}
+
+/// A coupling rating with every optional value present or not (issue 16).
+fn rating() -> impl Strategy<Value = CouplingRating> {
+    (
+        positive(1, 4),
+        prop::option::of(1.0..4.0f64),
+        prop::option::of(positive(0, 3)),
+        prop::option::of(positive(0, 3)),
+        prop::option::of(-20.0..70.0f64),
+    )
+        .prop_map(
+            |(rated, max_factor, vibratory, loss, ambient)| CouplingRating {
+                rated_torque_nm: rated,
+                max_torque_nm: max_factor.map(|f| f * rated),
+                permissible_vibratory_torque_nm: vibratory,
+                permissible_power_loss_w: loss,
+                ambient_c: ambient.unwrap_or(30.0),
+                permissible_temperature_c: 80.0,
+            },
+        )
 }
 
 fn connection_kind() -> impl Strategy<Value = ConnectionKind> {
@@ -367,6 +392,7 @@ fn assemble(parts: Parts) -> Model {
                 temperature_stiffness_poly: None,
                 temperature_damping_poly: None,
                 thermal: None,
+                rating: None,
             }),
         });
     }

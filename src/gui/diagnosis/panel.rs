@@ -35,6 +35,16 @@ pub fn diagnosis_ui(app: &mut TorsimApp, ui: &mut Ui) {
                 return;
             };
             ui.separator();
+            if app.model != finished.model && finished.change() != Some(&app.model) {
+                // Issue 16: a report of the model as it was is marked, not passed off as
+                // this model's.
+                ui.colored_label(
+                    ui.visuals().warn_fg_color,
+                    "This report diagnosed the model as it was before later edits: its \
+                     numbers are not this model's. Press Diagnose to run it on the model as \
+                     it is now.",
+                );
+            }
             super::verdict::verdict_ui(app, &finished, ui);
             ui.separator();
             super::map::map_ui(&finished.report, ui);

@@ -104,6 +104,24 @@ impl DiagnosisState {
         }
     }
 
+    /// Another model is shown: the run in progress stops, and the recordings (read against
+    /// the old model's nodes), the report and the messages go; the settings stay.
+    pub fn clear_for_new_model(&mut self) {
+        self.cancel();
+        *self = Self {
+            options: self.options.clone(),
+            last_id: self.last_id,
+            ..Default::default()
+        };
+    }
+
+    /// Stops the run in progress, if any (its thread ends at its next step).
+    pub fn cancel(&self) {
+        if let Some(job) = &self.job {
+            job.cancel();
+        }
+    }
+
     /// Shows `finished` as the latest diagnosis.
     pub fn show(&mut self, finished: Finished) {
         self.finished = Some(finished);

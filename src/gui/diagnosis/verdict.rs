@@ -52,6 +52,10 @@ pub fn verdict_ui(app: &mut TorsimApp, finished: &Finished, ui: &mut Ui) {
         .weak(),
     );
     ui.horizontal(|ui| accept_ui(app, finished, ui));
+    // Said while the model is the accepted one, so an undo takes the line away with it.
+    if finished.change() == Some(&app.model) {
+        ui.label(format!("Accepted: {}.", finished.changes.join("; ")));
+    }
     let message = &app.diagnosis.message;
     if !message.is_empty() {
         ui.label(message);
@@ -98,7 +102,6 @@ fn accept_ui(app: &mut TorsimApp, finished: &Finished, ui: &mut Ui) {
     {
         let before = std::mem::replace(&mut app.model, after.clone());
         app.commit(before);
-        app.diagnosis.message = format!("Accepted: {}.", finished.changes.join("; "));
         app.status = format!("accepted the diagnosis: {}", finished.report.verdict.effect);
     }
     if let Some(why) = why {

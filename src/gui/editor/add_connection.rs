@@ -103,6 +103,7 @@ pub fn add_ui(ui: &mut Ui, cx: &mut EditCtx, model: &mut Model) {
                     temperature_stiffness_poly: None,
                     temperature_damping_poly: None,
                     thermal: None,
+                    rating: None,
                 }),
                 _ => ConnectionKind::Gear(Gear {
                     ratio: 1.0,

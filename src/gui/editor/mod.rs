@@ -64,10 +64,13 @@ pub fn driveline_ui(app: &mut TorsimApp, ui: &mut Ui) {
         .auto_shrink([false, false])
         .show(ui, |ui| {
             ui.horizontal(|ui| {
-                ui.label("Model name");
-                let r = ui.add(
-                    egui::TextEdit::singleline(&mut app.model.name).desired_width(f32::INFINITY),
-                );
+                let l = ui.label("Model name");
+                let r = ui
+                    .add(
+                        egui::TextEdit::singleline(&mut app.model.name)
+                            .desired_width(f32::INFINITY),
+                    )
+                    .labelled_by(l.id);
                 cx.track(&r);
             });
             let sections: [(&str, &[&str], Option<Selection>, bool); 7] = [

@@ -171,112 +171,113 @@ fn diagram_ui(
     let strong = ui.visuals().strong_text_color();
     let faint = ui.visuals().weak_text_color().gamma_multiply(0.5);
     let (hover_major, hover_minor) = (major.clone(), minor.clone());
-    let response = Plot::new("campbell")
-        .id(egui::Id::unique(CAMPBELL_PLOT_ID))
-        .legend(
-            Legend::default()
-                .position(Corner::LeftTop)
-                .follow_insertion_order(true),
-        )
-        .default_x_bounds(n0, n1)
-        .default_y_bounds(0.0, f_top)
-        .x_axis_label("engine speed [rpm]")
-        .y_axis_label("frequency [Hz]")
-        .x_grid_spacer(grid_125)
-        .y_grid_spacer(grid_125)
-        .label_formatter(move |pos| match pos {
-            HoverPosition::NearDataPoint {
-                plot_name, index, ..
-            } if plot_name.starts_with("crossings") => {
-                let list = if plot_name.contains("major") {
-                    &hover_major
-                } else {
-                    &hover_minor
-                };
-                list.get(*index).map(crossing_text)
-            }
-            HoverPosition::NearDataPoint {
-                plot_name,
-                position,
-                ..
-            } => Some(format!("{plot_name}\n{:.0} rpm", position.x)),
-            HoverPosition::Elsewhere { position } => Some(format!(
-                "{:.0} rpm\n{} Hz\n= order {:.2}",
-                position.x,
-                fmt(position.y),
-                60.0 * position.y / position.x
-            )),
-        })
-        .show(ui, |plot| {
-            if let Some([lo, hi]) = operating {
-                plot.span(
-                    Span::new("operating range", lo..=hi)
-                        .fill(Color32::from_rgba_unmultiplied(60, 160, 60, 30)),
-                );
-            }
-            for &q in &diagram.orders {
-                let end = n1.min(f_top * 60.0 / q);
-                let line: PlotPoints = vec![[n0, q * n0 / 60.0], [end, q * end / 60.0]].into();
-                if is_major(step, q) {
-                    plot.line(
-                        Line::new("", line)
-                            .color(strong.gamma_multiply(0.7))
-                            .width(1.2)
-                            .allow_hover(false),
-                    );
-                    let at = PlotPoint::new(end, q * end / 60.0);
-                    let anchor = if end < n1 {
-                        egui::Align2::CENTER_TOP
+    let response =
+        super::fit_for_model(ui, Plot::new("campbell"), "campbell", app.plots.model_epoch)
+            .id(egui::Id::unique(CAMPBELL_PLOT_ID))
+            .legend(
+                Legend::default()
+                    .position(Corner::LeftTop)
+                    .follow_insertion_order(true),
+            )
+            .default_x_bounds(n0, n1)
+            .default_y_bounds(0.0, f_top)
+            .x_axis_label("engine speed [rpm]")
+            .y_axis_label("frequency [Hz]")
+            .x_grid_spacer(grid_125)
+            .y_grid_spacer(grid_125)
+            .label_formatter(move |pos| match pos {
+                HoverPosition::NearDataPoint {
+                    plot_name, index, ..
+                } if plot_name.starts_with("crossings") => {
+                    let list = if plot_name.contains("major") {
+                        &hover_major
                     } else {
-                        egui::Align2::RIGHT_BOTTOM
+                        &hover_minor
                     };
-                    let label = RichText::new(format!("{q}")).size(14.0).strong();
-                    plot.text(Text::new("", at, label).color(strong).anchor(anchor));
-                } else {
-                    plot.line(
-                        Line::new("", line)
-                            .color(faint)
-                            .width(0.6)
+                    list.get(*index).map(crossing_text)
+                }
+                HoverPosition::NearDataPoint {
+                    plot_name,
+                    position,
+                    ..
+                } => Some(format!("{plot_name}\n{:.0} rpm", position.x)),
+                HoverPosition::Elsewhere { position } => Some(format!(
+                    "{:.0} rpm\n{} Hz\n= order {:.2}",
+                    position.x,
+                    fmt(position.y),
+                    60.0 * position.y / position.x
+                )),
+            })
+            .show(ui, |plot| {
+                if let Some([lo, hi]) = operating {
+                    plot.span(
+                        Span::new("operating range", lo..=hi)
+                            .fill(Color32::from_rgba_unmultiplied(60, 160, 60, 30)),
+                    );
+                }
+                for &q in &diagram.orders {
+                    let end = n1.min(f_top * 60.0 / q);
+                    let line: PlotPoints = vec![[n0, q * n0 / 60.0], [end, q * end / 60.0]].into();
+                    if is_major(step, q) {
+                        plot.line(
+                            Line::new("", line)
+                                .color(strong.gamma_multiply(0.7))
+                                .width(1.2)
+                                .allow_hover(false),
+                        );
+                        let at = PlotPoint::new(end, q * end / 60.0);
+                        let anchor = if end < n1 {
+                            egui::Align2::CENTER_TOP
+                        } else {
+                            egui::Align2::RIGHT_BOTTOM
+                        };
+                        let label = RichText::new(format!("{q}")).size(14.0).strong();
+                        plot.text(Text::new("", at, label).color(strong).anchor(anchor));
+                    } else {
+                        plot.line(
+                            Line::new("", line)
+                                .color(faint)
+                                .width(0.6)
+                                .allow_hover(false),
+                        );
+                    }
+                }
+                for (i, f) in diagram.frequency_hz.iter().enumerate() {
+                    let line: PlotPoints = speeds.iter().zip(f).map(|(&n, &f)| [n, f]).collect();
+                    // The legend names the modes in the opening view; those above it (a
+                    // distributed shaft has many) are still drawn, unnamed.
+                    let name = if f.iter().all(|v| *v > f_top) {
+                        String::new()
+                    } else {
+                        format!("mode {} · {:.2} Hz", i + 1, f[0])
+                    };
+                    plot.line(Line::new(name, line).color(mode_color(i)).width(2.0));
+                }
+                let at = |v: &[Crossing]| -> Vec<[f64; 2]> {
+                    v.iter().map(|x| [x.speed_rpm, x.frequency_hz]).collect()
+                };
+                plot.points(
+                    Points::new("crossings, other orders", at(&minor))
+                        .radius(3.0)
+                        .filled(false)
+                        .color(Color32::from_gray(170)),
+                );
+                plot.points(
+                    Points::new("crossings, major orders", at(&major))
+                        .radius(4.5)
+                        .color(Color32::from_rgb(255, 200, 0)),
+                );
+                if let Some(x) = selected {
+                    plot.points(
+                        Points::new("", vec![[x.speed_rpm, x.frequency_hz]])
+                            .shape(MarkerShape::Circle)
+                            .filled(false)
+                            .radius(10.0)
+                            .color(Color32::WHITE)
                             .allow_hover(false),
                     );
                 }
-            }
-            for (i, f) in diagram.frequency_hz.iter().enumerate() {
-                let line: PlotPoints = speeds.iter().zip(f).map(|(&n, &f)| [n, f]).collect();
-                // The legend names the modes in the opening view; those above it (a
-                // distributed shaft has many) are still drawn, unnamed.
-                let name = if f.iter().all(|v| *v > f_top) {
-                    String::new()
-                } else {
-                    format!("mode {} · {:.2} Hz", i + 1, f[0])
-                };
-                plot.line(Line::new(name, line).color(mode_color(i)).width(2.0));
-            }
-            let at = |v: &[Crossing]| -> Vec<[f64; 2]> {
-                v.iter().map(|x| [x.speed_rpm, x.frequency_hz]).collect()
-            };
-            plot.points(
-                Points::new("crossings, other orders", at(&minor))
-                    .radius(3.0)
-                    .filled(false)
-                    .color(Color32::from_gray(170)),
-            );
-            plot.points(
-                Points::new("crossings, major orders", at(&major))
-                    .radius(4.5)
-                    .color(Color32::from_rgb(255, 200, 0)),
-            );
-            if let Some(x) = selected {
-                plot.points(
-                    Points::new("", vec![[x.speed_rpm, x.frequency_hz]])
-                        .shape(MarkerShape::Circle)
-                        .filled(false)
-                        .radius(10.0)
-                        .color(Color32::WHITE)
-                        .allow_hover(false),
-                );
-            }
-        });
+            });
     if response.response.clicked()
         && let Some(pointer) = response.response.interact_pointer_pos()
     {

@@ -56,6 +56,15 @@ pub fn crossing_response(
     Some((q, node, series))
 }
 
+/// A steady time run at `speed_rpm`, shown in the Time traces tab (issue 16: "run at this
+/// crossing speed").
+pub fn simulate_at(app: &mut TorsimApp, speed_rpm: f64) {
+    app.trace_speed_rpm = speed_rpm;
+    app.traces.mode = crate::gui::trace_state::TraceMode::Steady;
+    app.tab = crate::gui::app::Tab::Traces;
+    app.request();
+}
+
 /// The shape and response of crossing `x` side by side.
 pub fn detail_ui(
     app: &mut TorsimApp,
@@ -69,9 +78,27 @@ pub fn detail_ui(
     let energy = main_element(system, diagram, i).map_or(String::new(), |(name, share)| {
         format!("; strain energy mostly in {name} ({:.0} %)", 100.0 * share)
     });
-    ui.strong(format!("{}{energy}", mode_text(diagram, damped, i)));
+    ui.horizontal_wrapped(|ui| {
+        ui.strong(format!("{}{energy}", mode_text(diagram, damped, i)));
+        if ui
+            .button(format!("Simulate at {:.0} rpm", x.speed_rpm))
+            .on_hover_text(
+                "a steady time run at the crossing speed, in the Time traces tab: the \
+                 nonlinear model's answer at this resonance",
+            )
+            .clicked()
+        {
+            simulate_at(app, x.speed_rpm);
+        }
+    });
     ui.columns(2, |cols| {
-        shape_plot(&mut cols[0], system, diagram, i, "crossing_shape");
+        shape_plot(
+            &mut cols[0],
+            (system, diagram),
+            i,
+            "crossing_shape",
+            app.plots.model_epoch,
+        );
         let ui = &mut cols[1];
         let Some(r) = app.results.response.clone() else {
             ui.label("computing the forced response…");
@@ -98,21 +125,26 @@ pub fn detail_ui(
                     ui.selectable_value(&mut app.plots.crossing_station, value, name);
                 }
             });
-        Plot::new("crossing_response")
-            .legend(Legend::default().follow_insertion_order(true))
-            .x_axis_label("engine speed [rpm]")
-            .y_axis_label("IAS amplitude [rpm] (zero-to-peak)")
-            .x_grid_spacer(grid_125)
-            .y_grid_spacer(grid_125)
-            .include_y(0.0)
-            .label_formatter(hover_label("rpm", "rpm"))
-            .show(ui, |plot| {
-                plot.vline(
-                    VLine::new(format!("crossing {:.0} rpm", x.speed_rpm), x.speed_rpm)
-                        .color(Color32::from_gray(200))
-                        .allow_hover(false),
-                );
-                plot.line(series.line());
-            });
+        super::fit_for_model(
+            ui,
+            Plot::new("crossing_response"),
+            "crossing_response",
+            app.plots.model_epoch,
+        )
+        .legend(Legend::default().follow_insertion_order(true))
+        .x_axis_label("engine speed [rpm]")
+        .y_axis_label("IAS amplitude [rpm] (zero-to-peak)")
+        .x_grid_spacer(grid_125)
+        .y_grid_spacer(grid_125)
+        .include_y(0.0)
+        .label_formatter(hover_label("rpm", "rpm"))
+        .show(ui, |plot| {
+            plot.vline(
+                VLine::new(format!("crossing {:.0} rpm", x.speed_rpm), x.speed_rpm)
+                    .color(Color32::from_gray(200))
+                    .allow_hover(false),
+            );
+            plot.line(series.line());
+        });
     });
 }

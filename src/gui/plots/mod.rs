@@ -60,6 +60,24 @@ pub struct CrossingKey {
     pub mode: usize,
 }
 
+/// `plot` fitted to its data (as a double-click does) in the first frame it is drawn
+/// for a model opened after the one it last showed (issue 16: the Campbell diagram kept
+/// the previous model's speed range); `key` names the plot.
+pub fn fit_for_model<'a>(
+    ui: &Ui,
+    plot: egui_plot::Plot<'a>,
+    key: &str,
+    epoch: u64,
+) -> egui_plot::Plot<'a> {
+    let id = egui::Id::unique(("torsim-plot-epoch", key));
+    let drawn = ui.data(|d| d.get_temp::<u64>(id));
+    ui.data_mut(|d| d.insert_temp(id, epoch));
+    match drawn {
+        Some(e) if e != epoch => plot.reset(),
+        _ => plot,
+    }
+}
+
 /// What the plots show, kept in the app across edits.
 #[derive(Debug, Clone, PartialEq)]
 pub struct PlotState {
@@ -75,12 +93,15 @@ pub struct PlotState {
     pub station: Option<String>,
     /// Connection (name) of the torque and power-loss responses.
     pub connection: Option<String>,
-    /// The mode-shape animation runs.
+    /// The mode-shape animation runs (default: paused, so an idle window is idle; issue 16).
     pub playing: bool,
     /// Peak rotation drawn for the largest modal amplitude, degrees.
     pub amplitude_deg: f32,
-    /// Phase of the animation, cycles.
+    /// Phase of the animation, cycles (default 0.25: the shape at its largest swing).
     pub phase_cycles: f64,
+    /// Counts the models shown in this window: a plot drawn for the first time after
+    /// another model was opened fits its data again ([`fit_for_model`]).
+    pub model_epoch: u64,
 }
 
 impl Default for PlotState {
@@ -91,9 +112,10 @@ impl Default for PlotState {
             quantity: Quantity::Ias,
             station: None,
             connection: None,
-            playing: true,
+            playing: false,
             amplitude_deg: 40.0,
-            phase_cycles: 0.0,
+            phase_cycles: 0.25,
+            model_epoch: 0,
         }
     }
 }
@@ -164,6 +186,8 @@ pub fn central_ui(app: &mut TorsimApp, ui: &mut Ui) {
             (Tab::Diagnosis, "Diagnosis"),
         ] {
             ui.selectable_value(&mut app.tab, tab, label);
+            ui.add(egui::Label::new(egui::RichText::new("?").weak()).sense(egui::Sense::hover()))
+                .on_hover_text(super::help::tab_help(tab));
         }
         if app.tab == Tab::Diagnosis {
             return;

@@ -88,7 +88,13 @@ pub fn main_element(system: &System, diagram: &Campbell, i: usize) -> Option<(St
 /// The shape of mode `selected` along the driveline (own-shaft rotation, largest 1), the
 /// node names under it (staggered so that long names do not overlap). `id` tells plots
 /// apart.
-pub fn shape_plot(ui: &mut Ui, system: &System, diagram: &Campbell, selected: usize, id: &str) {
+pub fn shape_plot(
+    ui: &mut Ui,
+    (system, diagram): (&System, &Campbell),
+    selected: usize,
+    id: &str,
+    epoch: u64,
+) {
     let Some(mode) = diagram.modes.get(selected) else {
         return;
     };
@@ -107,7 +113,7 @@ pub fn shape_plot(ui: &mut Ui, system: &System, diagram: &Campbell, selected: us
     let name = format!("mode {} · {:.2} Hz", selected + 1, mode.frequency_hz);
     let color = mode_color(selected);
     let label_color = ui.visuals().text_color();
-    Plot::new(id)
+    super::fit_for_model(ui, Plot::new(id), id, epoch)
         .x_axis_label("node, along the driveline")
         .y_axis_label("relative rotation [-] (own shaft)")
         .include_y(-1.35)
@@ -273,7 +279,13 @@ pub fn modes_ui(app: &mut TorsimApp, ui: &mut Ui) {
     let height = ui.available_height();
     ui.allocate_ui(egui::vec2(ui.available_width(), 0.5 * height), |ui| {
         ui.columns(2, |cols| {
-            shape_plot(&mut cols[0], system, diagram, i, "modes");
+            shape_plot(
+                &mut cols[0],
+                (system, diagram),
+                i,
+                "modes",
+                app.plots.model_epoch,
+            );
             egui::ScrollArea::vertical()
                 .id_salt("energy_scroll")
                 .show(&mut cols[1], |ui| energy_table_ui(ui, system, &shares));

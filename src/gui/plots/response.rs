@@ -137,7 +137,7 @@ pub fn response_ui(app: &mut TorsimApp, ui: &mut Ui) {
     let quantity = app.plots.quantity;
     let operating = app.model.operation.operating_range_rpm;
     let marker = app.plots.crossing.and_then(|k| super::crossing_at(app, k));
-    Plot::new("response")
+    super::fit_for_model(ui, Plot::new("response"), "response", app.plots.model_epoch)
         .legend(Legend::default().follow_insertion_order(true))
         .x_axis_label("engine speed [rpm]")
         .y_axis_label(quantity.y_label())

@@ -92,7 +92,20 @@ fn series_menus_ui(app: &mut TorsimApp, ui: &mut Ui) {
 /// One plot per quantity, stacked; IAS twice as tall.
 fn time_traces_ui(app: &mut TorsimApp, ui: &mut Ui) {
     let Some(kind) = app.results.live.as_ref().map(|l| l.layout.kind) else {
-        ui.label("Waiting for the first samples of the time run…");
+        // Issue 16: an error state says so and shows the way out, never "waiting".
+        let text = if app.error_of("recording").is_some() {
+            "No time run: it follows the open recording, which could not be used (above). \
+             Close the recording, or choose a steady run or a run-up."
+        } else if app.error_of("trace").is_some() {
+            "No time run: the error above stops it. Edit the model or the run settings."
+        } else if app.invalid.is_some() {
+            "No time run: the model is invalid (see the status line and the driveline panel)."
+        } else if app.results.trace_cancelled == Some(app.results.generation) {
+            "The time run was cancelled: Run again above."
+        } else {
+            "Waiting for the first samples of the time run…"
+        };
+        ui.label(text);
         return;
     };
     // A run of another kind opens with its own zoom and series; a re-run of the same

@@ -1,0 +1,73 @@
+//! Issue 16, deliverable 6, on the real app: the "?" beside each tab explains it, and a
+//! selected Campbell crossing runs the time domain at its speed ("Simulate at … rpm").
+//! The teaching presets' modes against their closed forms are held by their `[expect]`
+//! (`torsim check`, and `tests/presets.rs`).
+
+use super::app::{Tab, TorsimApp};
+use super::plots::CrossingKey;
+use super::trace_state::TraceMode;
+use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable;
+use std::time::{Duration, Instant};
+use torsim::model::{parse_model, presets};
+
+fn harness() -> Harness<'static, TorsimApp> {
+    Harness::builder()
+        .with_size([1280.0, 800.0])
+        .build_eframe(|cc| {
+            let ctx = cc.egui_ctx.clone();
+            let p = presets::preset("two-inertia").expect("preset");
+            let model = parse_model(p.text, p.name).expect("model");
+            TorsimApp::new(model, None, move || ctx.request_repaint())
+        })
+}
+
+#[test]
+fn every_tab_has_its_explanation() {
+    let mut h = harness();
+    h.run_steps(2);
+    let marks: Vec<_> = h.get_all_by_label("?").collect();
+    assert_eq!(marks.len(), 5, "one ? per tab");
+    for tab in [
+        Tab::Campbell,
+        Tab::Modes,
+        Tab::Response,
+        Tab::Traces,
+        Tab::Diagnosis,
+    ] {
+        let text = super::help::tab_help(tab);
+        let sentences = text.matches(". ").count() + 1;
+        assert!(
+            (3..=4).contains(&sentences),
+            "{tab:?}: {sentences} sentences"
+        );
+    }
+}
+
+/// The two-inertia preset's order-2 crossing is at 1169.5 rpm (closed form); "Simulate
+/// at 1170 rpm" opens the Time traces tab on a steady run there.
+#[test]
+fn a_crossing_runs_the_time_domain_at_its_speed() {
+    let mut h = harness();
+    let start = Instant::now();
+    while h.state().results.campbell.is_none() {
+        assert!(start.elapsed() < Duration::from_secs(30), "timed out");
+        std::thread::sleep(Duration::from_millis(20));
+        h.step();
+    }
+    h.state_mut().plots.crossing = Some(CrossingKey {
+        order: 2.0,
+        mode: 1,
+    });
+    h.run_steps(3);
+    h.get_by_label("Simulate at 1170 rpm").click();
+    h.run_steps(2);
+    let app = h.state();
+    assert_eq!(app.tab, Tab::Traces);
+    assert_eq!(app.traces.mode, TraceMode::Steady);
+    assert!(
+        (app.trace_speed_rpm - 1169.545).abs() < 0.1,
+        "{}",
+        app.trace_speed_rpm
+    );
+}
