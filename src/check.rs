@@ -1,6 +1,7 @@
 //! The `[expect]` checks of a model (`spec/model-format.md`): natural frequencies in a
 //! band, critical speeds of an order in a band, orders free of resonance in the operating
-//! range. Evaluated at the default operating point (full load, each stage's temperature).
+//! range, and (an extension, issue 16) rated couplings within their ratings. Evaluated at
+//! the default operating point (full load, each stage's temperature).
 
 use crate::modal::{critical_speed_rpm, modes};
 use crate::model::Model;
@@ -9,7 +10,7 @@ use crate::physics::{OperatingPoint, PhysicsError, System};
 /// One check and its outcome.
 #[derive(Debug, Clone, PartialEq)]
 pub struct CheckOutcome {
-    /// `mode_hz`, `critical_rpm` or `no_resonance_in_operating_range`.
+    /// `mode_hz`, `critical_rpm`, `no_resonance_in_operating_range` or `within_ratings`.
     pub kind: &'static str,
     /// What was expected, for a person.
     pub expected: String,
@@ -95,6 +96,54 @@ pub fn run_checks(model: &Model) -> Result<Vec<CheckOutcome>, PhysicsError> {
                 },
                 value: None,
                 passed: inside.is_empty(),
+            });
+        }
+    }
+    out.extend(rating_checks(model, &system)?);
+    Ok(out)
+}
+
+/// `within_ratings`: each named stage's worst utilisation of every rating over the
+/// operating range (else the speed range), from the forced response at full load over
+/// 201 speeds.
+fn rating_checks(model: &Model, system: &System) -> Result<Vec<CheckOutcome>, PhysicsError> {
+    if model.expect.within_ratings.is_empty() {
+        return Ok(Vec::new());
+    }
+    let [lo, hi] = model
+        .operation
+        .operating_range_rpm
+        .or(model.operation.speed_range_rpm)
+        .unwrap_or([100.0, 3000.0]);
+    let speeds = crate::modal::speed_grid(lo, hi, (hi - lo) / 200.0);
+    let orders = model.orders();
+    let excitation = crate::physics::Excitation::new(model, system, 1.0, &orders);
+    let response = crate::response::forced_response(system, &excitation, &speeds)?;
+    let stages = crate::ratings::check_ratings(model, system, &response);
+    let mut out = Vec::new();
+    for name in &model.expect.within_ratings {
+        let Some(stage) = stages.iter().find(|s| s.connection == *name) else {
+            continue;
+        };
+        for w in stage.worst(None) {
+            let at = match w.order {
+                Some(q) => format!("order {q} at {:.0} rpm", w.speed_rpm),
+                None => format!("{:.0} rpm", w.speed_rpm),
+            };
+            out.push(CheckOutcome {
+                kind: "within_ratings",
+                expected: format!(
+                    "{name}: {} within its limit in {lo} … {hi} rpm",
+                    w.kind.limit_name()
+                ),
+                computed: format!(
+                    "{name}: {:.0} % of {} ({:.0}) at {at}, with S_t and S_f",
+                    100.0 * w.utilisation,
+                    w.kind.limit_name(),
+                    w.limit
+                ),
+                value: Some(w.utilisation),
+                passed: w.utilisation <= 1.0,
             });
         }
     }

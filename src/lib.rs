@@ -76,6 +76,7 @@ pub mod limits;
 pub mod modal;
 pub mod model;
 pub mod physics;
+pub mod ratings;
 pub mod recording;
 pub mod response;
 pub mod rubber;

@@ -17,6 +17,7 @@ mod json_guard;
 pub use input::load_model;
 mod modes;
 mod progress;
+pub mod ratings;
 mod response;
 mod simulate;
 mod synth;

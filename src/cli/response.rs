@@ -40,7 +40,9 @@ pub fn run(sweep: &Sweep, orders: Option<Vec<f64>>, json: bool) -> Result<(), Cl
         .flat_map(|n| orders.iter().map(move |q| q * n / 60.0))
         .collect();
     print_warnings(&system.frequency_range_warnings(&excited_hz));
+    let ratings = super::ratings::Ratings::new(&model, &system, &r);
     if json {
+        let (rated, beyond) = super::ratings::json(&ratings)?;
         let mut nodes = Map::new();
         for (name, per_order) in system.node_names.iter().zip(&r.ias_amplitude_rpm) {
             let mut by_order = Map::new();
@@ -71,6 +73,8 @@ pub fn run(sweep: &Sweep, orders: Option<Vec<f64>>, json: bool) -> Result<(), Cl
             "orders": numbers(&orders, "order")?,
             "nodes": Value::Object(nodes),
             "connections": Value::Object(connections),
+            "ratings": rated,
+            "beyond_linear_range": beyond,
         }));
     }
     let mut text = String::new();
@@ -108,5 +112,6 @@ pub fn run(sweep: &Sweep, orders: Option<Vec<f64>>, json: bool) -> Result<(), Cl
         })
         .collect();
     text += &table(&header, &rows);
+    text += &super::ratings::text(&ratings);
     emit(&text)
 }

@@ -44,6 +44,8 @@ pub struct Results {
     pub campbell_generation: u64,
     /// Forced response.
     pub response: Option<Arc<Response>>,
+    /// The coupling ratings on that response, and the linear range.
+    pub ratings: Option<Arc<super::worker::RatingsResult>>,
     /// The finished time run.
     pub trace: Option<Arc<Simulation>>,
     /// Progress of the time run.
@@ -263,6 +265,7 @@ impl TorsimApp {
                     self.results.campbell_generation = g;
                 }
                 SimResult::Response(g, r) if g == current => self.results.response = Some(r),
+                SimResult::Ratings(g, r) if g == current => self.results.ratings = Some(r),
                 SimResult::Trace(g, t) if g == current => {
                     self.results.trace = Some(t);
                     self.results.trace_progress = 1.0;

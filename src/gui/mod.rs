@@ -47,6 +47,8 @@ mod tests_overwrite;
 #[cfg(test)]
 mod tests_plots;
 #[cfg(test)]
+mod tests_ratings;
+#[cfg(test)]
 mod tests_recovery;
 #[cfg(test)]
 mod tests_shaft;

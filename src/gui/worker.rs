@@ -49,6 +49,9 @@ pub enum SimResult {
     Campbell(u64, Arc<(System, Campbell, Vec<DampedMode>)>),
     /// The forced response over the speed range.
     Response(u64, Arc<Response>),
+    /// The coupling ratings checked on that response, and where it leaves the linear
+    /// range ([`torsim::ratings`]).
+    Ratings(u64, Arc<RatingsResult>),
     /// The time run starts settling; what runs, for a person.
     TraceRunning(u64, String),
     /// The time run starts recording: the layout of its chunks.
@@ -68,6 +71,15 @@ pub enum SimResult {
     /// An analysis failed; `0` names which (`"modes"`, `"response"`, `"trace"`,
     /// `"recording"`).
     Error(u64, &'static str, String),
+}
+
+/// The ratings of every rated stage and the nodes beyond the linear range.
+#[derive(Debug, Clone, Default)]
+pub struct RatingsResult {
+    /// Each rated rubber stage's checks over the sweep.
+    pub stages: Vec<torsim::ratings::StageRating>,
+    /// Where the IAS leaves the linear model's range.
+    pub beyond: Vec<torsim::ratings::BeyondLinear>,
 }
 
 /// The worker thread and its channels.
@@ -246,7 +258,14 @@ pub fn compute(
     }
     let excitation = Excitation::new(model, &system, 1.0, &orders);
     match forced_response(&system, &excitation, &speeds) {
-        Ok(r) => send(SimResult::Response(generation, Arc::new(r))),
+        Ok(r) => {
+            let ratings = RatingsResult {
+                stages: torsim::ratings::check_ratings(model, &system, &r),
+                beyond: torsim::ratings::beyond_linear_range(&system, &r),
+            };
+            send(SimResult::Response(generation, Arc::new(r)));
+            send(SimResult::Ratings(generation, Arc::new(ratings)));
+        }
         Err(e) => send(SimResult::Error(generation, "response", e.to_string())),
     }
     (!stale()).then_some(system)

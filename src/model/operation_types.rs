@@ -44,6 +44,10 @@ pub struct Expect {
     pub critical_rpm: Vec<CriticalExpectation>,
     /// Orders that must cross no mode inside `operating_range_rpm`.
     pub no_resonance_in_operating_range: Vec<f64>,
+    /// Rated rubber stages (connection names) that must stay within every rating over
+    /// the operating range, else the speed range, at full load (issue 16,
+    /// [`crate::ratings`]).
+    pub within_ratings: Vec<String>,
 }
 
 impl Expect {
@@ -52,6 +56,7 @@ impl Expect {
         self.mode_hz.is_empty()
             && self.critical_rpm.is_empty()
             && self.no_resonance_in_operating_range.is_empty()
+            && self.within_ratings.is_empty()
     }
 }
 

@@ -145,7 +145,31 @@ pub(super) fn operation(t: &Tab) -> Result<Operation, ModelError> {
 }
 
 pub(super) fn expect(t: &Tab) -> Result<Expect, ModelError> {
-    t.allow(&["mode_hz", "critical_rpm", "no_resonance_in_operating_range"])?;
+    t.allow(&[
+        "mode_hz",
+        "critical_rpm",
+        "no_resonance_in_operating_range",
+        "within_ratings",
+    ])?;
+    let within_ratings = match t.get("within_ratings") {
+        None => Vec::new(),
+        Some(item) => item
+            .as_array()
+            .ok_or_else(|| {
+                wrong_type(&t.key("within_ratings"), "a list of connection names", item)
+            })?
+            .iter()
+            .enumerate()
+            .map(|(i, v)| {
+                v.as_str().map(str::to_string).ok_or_else(|| {
+                    ModelError::at(
+                        format!("{}[{i}]", t.key("within_ratings")),
+                        "expected a connection name",
+                    )
+                })
+            })
+            .collect::<Result<_, _>>()?,
+    };
     let mode_list = t.list("mode_hz")?;
     let critical_list = t.list("critical_rpm")?;
     let mode_hz = mode_list.iter().map(|m| {
@@ -170,5 +194,6 @@ pub(super) fn expect(t: &Tab) -> Result<Expect, ModelError> {
         no_resonance_in_operating_range: t
             .opt_f64s("no_resonance_in_operating_range")?
             .unwrap_or_default(),
+        within_ratings,
     })
 }

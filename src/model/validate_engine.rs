@@ -245,6 +245,18 @@ pub(crate) fn operation_and_expect(model: &Model) -> Check {
     if !ex.no_resonance_in_operating_range.is_empty() && op.operating_range_rpm.is_none() {
         fail(key, "needs `operating_range_rpm` in [operation]")?;
     }
+    for (i, name) in ex.within_ratings.iter().enumerate() {
+        let rated = model.connections.iter().any(|c| {
+            c.name == *name
+                && matches!(&c.kind, crate::model::ConnectionKind::Rubber(r) if r.rating.is_some())
+        });
+        if !rated {
+            fail(
+                format!("expect.within_ratings[{i}]"),
+                format!("`{name}` is no rubber stage with a `rating`"),
+            )?;
+        }
+    }
     Ok(())
 }
 

@@ -343,4 +343,8 @@ fn expect(out: &mut String, ex: &Expect) {
         let orders = nums(&ex.no_resonance_in_operating_range, 0, 34);
         kv(out, "no_resonance_in_operating_range", orders);
     }
+    if !ex.within_ratings.is_empty() {
+        let names: Vec<String> = ex.within_ratings.iter().map(|n| string(n)).collect();
+        kv(out, "within_ratings", array(&names, 0, 5));
+    }
 }

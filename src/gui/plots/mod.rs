@@ -7,6 +7,7 @@ mod animation;
 mod campbell;
 pub mod colour_scale;
 mod crossing;
+mod limits;
 mod modes;
 mod order_tracks;
 mod quantity;

@@ -62,7 +62,13 @@ fn current(app: &TorsimApp) -> Option<(String, Vec<Series>)> {
             .replace(" per station", "")
             .replace(" per connection", "")
     );
-    Some((title, response_series(r, quantity, index, mean)))
+    let mut series = response_series(r, quantity, index, mean);
+    if let Some(&connection) = r.connections.get(index)
+        && quantity != Quantity::Ias
+    {
+        series.extend(super::limits::limit_series(app, quantity, connection));
+    }
+    Some((title, series))
 }
 
 /// The forced-response data on screen, for export.
@@ -131,6 +137,7 @@ pub fn response_ui(app: &mut TorsimApp, ui: &mut Ui) {
         return;
     };
     let zoom = selectors_ui(app, &r, ui);
+    super::limits::warnings_ui(app, ui);
     let Some((_, series)) = current(app) else {
         return;
     };
