@@ -35,4 +35,4 @@ for value in 0.2 0.15 0.1 0.25 0.12; do
 done
 xdotool key Return
 sleep 2
-grep 'torsim latency' "$log" || echo "no edit was measured" >&2
+grep "torsim latency" "$log" || echo "no edit was measured" >&2

@@ -263,6 +263,7 @@ impl TorsimApp {
                 SimResult::Campbell(g, c) if g == current => {
                     self.results.campbell = Some(c);
                     self.results.campbell_generation = g;
+                    self.latency.arrived(g);
                 }
                 SimResult::Response(g, r) if g == current => self.results.response = Some(r),
                 SimResult::Ratings(g, r) if g == current => self.results.ratings = Some(r),

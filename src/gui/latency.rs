@@ -18,6 +18,8 @@ pub struct Probe {
     at: Instant,
     /// Frames begun since.
     frames: u32,
+    /// When its Campbell diagram arrived from the simulation thread.
+    arrived: Option<Instant>,
 }
 
 /// The probe of the last edit, when the log is on.
@@ -43,6 +45,7 @@ impl Latency {
                 generation,
                 at: Instant::now(),
                 frames: 0,
+                arrived: None,
             });
         }
     }
@@ -54,6 +57,16 @@ impl Latency {
         }
     }
 
+    /// The Campbell diagram of request `generation` arrived.
+    pub fn arrived(&mut self, generation: u64) {
+        if let Some(p) = &mut self.probe
+            && p.generation == generation
+            && p.arrived.is_none()
+        {
+            p.arrived = Some(Instant::now());
+        }
+    }
+
     /// A frame ended having drawn the Campbell diagram of request `generation`: the
     /// latency of the edit that asked for it, if that is the one waiting.
     pub fn drawn(&mut self, generation: u64) {
@@ -61,8 +74,12 @@ impl Latency {
             && p.generation == generation
         {
             self.probe = None;
+            let arrived_ms = p
+                .arrived
+                .map_or(f64::NAN, |t| 1e3 * (t - p.at).as_secs_f64());
             eprintln!(
-                "torsim latency: edit to plot {:.1} ms, {} frame(s) (request {generation})",
+                "torsim latency: edit to plot {:.1} ms, {} frame(s); the results arrived \
+                 after {arrived_ms:.1} ms (request {generation})",
                 1e3 * p.at.elapsed().as_secs_f64(),
                 p.frames
             );
