@@ -199,6 +199,7 @@ pub fn report(
                 equivalent.join(", ")
             )
         };
+        let sentence = super::words::effect_sentence(&b.out.effect, &parameters);
         // The best candidate other than the verdict (the first, unless a branch was set
         // aside before it).
         let other = if best_index == Some(0) { 1 } else { 0 };
@@ -212,10 +213,10 @@ pub fn report(
                 confidence: (1.0 - b.out.score / runner_up).clamp(0.0, 1.0),
                 parameters,
                 explanation: format!(
-                    "The model misses {}: with it ({}), fitted together with the plain \
-                     parameters, the held-out χ²/N falls from {before:.2} to {:.2}, against \
-                     {:.2} for the plain parameters alone.{also}",
-                    b.out.effect,
+                    "{} With it ({}), fitted together with the plain parameters, the \
+                     held-out χ²/N falls from {before:.2} to {:.2}, against {:.2} for the \
+                     plain parameters alone.{also}",
+                    sentence,
                     b.name,
                     b.out.residual_after,
                     cx.chi2(plain, true)

@@ -87,6 +87,7 @@ mod tests_rejected;
 #[cfg(test)]
 mod tests_sensor_gain;
 pub mod trial;
+pub mod words;
 
 pub use html::report_html;
 pub use report::Report;

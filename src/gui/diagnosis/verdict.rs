@@ -17,11 +17,26 @@ pub fn verdict_ui(app: &mut TorsimApp, finished: &Finished, ui: &mut Ui) {
     ui.horizontal_wrapped(|ui| {
         ui.label(RichText::new("Verdict:").heading());
         ui.label(RichText::new(&v.effect).heading().color(VERDICT_COLOR));
-        ui.label(format!("confidence {:.0} %", 100.0 * v.confidence))
-            .on_hover_text(
-                "how clearly the verdict beat the runner-up on the held-out data (0 to 100 %)",
-            );
     });
+    // Issue 16: the physics in a sentence with its place and size, and the confidence
+    // said as what it measures.
+    ui.add(
+        egui::Label::new(
+            RichText::new(torsim::diagnose::words::effect_sentence(
+                &v.effect,
+                &v.parameters,
+            ))
+            .strong(),
+        )
+        .wrap(),
+    );
+    ui.label(format!(
+        "Confidence {:.0} %: on the recordings the fit did not use, the verdict's misfit \
+         (χ²/N) is {:.0} % below that of the next best explanation.",
+        100.0 * v.confidence,
+        100.0 * v.confidence
+    ))
+    .on_hover_text("1 − (the verdict's held-out χ²/N) / (the runner-up's), 0 to 100 %");
     if !v.parameters.is_empty() {
         let parameters: Vec<String> = v
             .parameters
