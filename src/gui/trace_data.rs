@@ -68,19 +68,11 @@ impl TraceLayout {
         profile_rpm(self.kind, t_s)
     }
 
-    /// The time range a plot opens on, s: a steady run's first six working cycles (its
-    /// waveform), a ramp's whole duration.
+    /// The time range a plot opens on and a double-click returns to, s: the whole run.
     pub fn opening_range_s(&self) -> [f64; 2] {
-        let duration_s = self.kind.duration_s;
-        if self.kind.is_ramp() {
-            [0.0, duration_s]
-        } else {
-            let speed_rpm = self.kind.speeds_rpm()[0];
-            [
-                0.0,
-                (6.0 * self.cycle_rev * 60.0 / speed_rpm).min(duration_s),
-            ]
-        }
+        // Issue 16: a steady run opened on its first 6 cycles (0.48 s of 2 s), and a
+        // double-click went back there; every run now opens, and resets, on all of it.
+        [0.0, self.kind.duration_s]
     }
 
     /// True for a run-up or run-down.

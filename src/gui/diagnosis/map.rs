@@ -159,6 +159,7 @@ fn station_plot(ui: &mut Ui, station: &str, cells: &[Drawn], width: f32) {
         .x_axis_label("engine speed [rpm]")
         .y_axis_label("engine order")
         .x_grid_spacer(crate::gui::plots::grid_125)
+        .x_axis_formatter(crate::gui::plots::tick_label)
         .allow_scroll(false)
         .label_formatter(|pos| {
             let p = match pos {

@@ -86,6 +86,7 @@ fn overlay_plot(ui: &mut Ui, o: &Overlay, index: usize, width: f32) {
         .x_axis_label(o.x_label.as_str())
         .y_axis_label("IAS amplitude [rpm]")
         .x_grid_spacer(grid_125)
+        .x_axis_formatter(crate::gui::plots::tick_label)
         .include_y(0.0)
         .allow_scroll(false)
         .label_formatter(|pos| Some(readout(o, pos)))

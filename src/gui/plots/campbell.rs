@@ -185,6 +185,8 @@ fn diagram_ui(
             .y_axis_label("frequency [Hz]")
             .x_grid_spacer(grid_125)
             .y_grid_spacer(grid_125)
+            .x_axis_formatter(super::tick_label)
+            .y_axis_formatter(super::tick_label)
             .label_formatter(move |pos| match pos {
                 HoverPosition::NearDataPoint {
                     plot_name, index, ..

@@ -136,6 +136,8 @@ pub fn detail_ui(
         .y_axis_label("IAS amplitude [rpm] (zero-to-peak)")
         .x_grid_spacer(grid_125)
         .y_grid_spacer(grid_125)
+        .x_axis_formatter(super::tick_label)
+        .y_axis_formatter(super::tick_label)
         .include_y(0.0)
         .label_formatter(hover_label("rpm", "rpm"))
         .show(ui, |plot| {

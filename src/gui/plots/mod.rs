@@ -28,7 +28,7 @@ pub use crossing::crossing_response;
 pub use quantity::Quantity;
 #[cfg(test)]
 pub use quantity::matters;
-pub use series::{fmt, grid_125};
+pub use series::{fmt, grid_125, tick_label};
 
 use super::app::{Tab, TorsimApp};
 use egui::{Color32, Ui};

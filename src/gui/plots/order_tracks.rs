@@ -37,6 +37,7 @@ pub fn order_tracks_ui(
         .width((ui.available_width() - SCALE_W).max(200.0))
         .y_axis_min_width(time_series::Y_AXIS_W)
         .y_grid_spacer(time_series::nice_grid())
+        .y_axis_formatter(super::tick_label)
         .x_grid_spacer(axis.grid())
         .link_axis(time_link(), [true, false])
         .link_cursor(time_link(), [true, false])

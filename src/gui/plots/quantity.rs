@@ -93,14 +93,15 @@ pub fn response_series(
         .map(|s| per_order.iter().map(|v| v[s]).sum())
         .collect();
     let top = sum.iter().copied().fold(0.0, f64::max);
-    // Colour by the order's place in the list: an order keeps its colour across
-    // stations and quantities.
+    // Colour by the order's rank among the orders drawn (issue 16: by its place in the
+    // list of all orders, 1.5, 6.5 and 11.5 shared a colour): the palette's first colours
+    // go to the lowest orders shown, so no two lines of a plot share one.
     let mut out: Vec<Series> = r
         .orders
         .iter()
         .zip(per_order)
+        .filter(|(_, v)| matters(v, &sum, top))
         .enumerate()
-        .filter(|(_, (_, v))| matters(v, &sum, top))
         .map(|(k, (q, v))| {
             Series::new(
                 format!("order {q}"),

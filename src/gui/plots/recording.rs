@@ -133,6 +133,8 @@ pub fn orders_ui(app: &mut TorsimApp, ui: &mut Ui) {
                 .height(per)
                 .y_axis_min_width(super::time_series::Y_AXIS_W)
                 .y_grid_spacer(super::time_series::nice_grid())
+                .y_axis_formatter(super::tick_label)
+                .x_axis_formatter(super::tick_label)
                 .legend(Legend::default().follow_insertion_order(true).title(name))
                 .y_axis_label("amplitude [rpm] 0-pk");
             let last = i + 1 == shown.len();

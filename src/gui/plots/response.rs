@@ -150,6 +150,8 @@ pub fn response_ui(app: &mut TorsimApp, ui: &mut Ui) {
         .y_axis_label(quantity.y_label())
         .x_grid_spacer(grid_125)
         .y_grid_spacer(grid_125)
+        .x_axis_formatter(super::tick_label)
+        .y_axis_formatter(super::tick_label)
         .label_formatter(hover_label("rpm", quantity.unit()))
         .include_y(0.0)
         .show(ui, |plot| {

@@ -165,6 +165,28 @@ pub fn hover_label(
     }
 }
 
+/// An axis tick's text with as many decimals as its grid step needs (issue 16: with
+/// egui_plot's default an order axis read "1, 0, 0" for 0.5, 1, 1.5): none for steps of 1
+/// or more, one for 0.5 or 0.1, two for 0.05, …; large and tiny values in engineering
+/// form. Used by every plot with numeric axes.
+pub fn tick_label(mark: egui_plot::GridMark, _range: &std::ops::RangeInclusive<f64>) -> String {
+    let (v, step) = (mark.value, mark.step_size.abs());
+    if v == 0.0 {
+        return "0".into();
+    }
+    if v.abs() >= 1e6 || (v.abs() < 1e-4) {
+        return format!("{v:.2e}");
+    }
+    // The fewest decimals that write the step exactly: 0.5 → 1, 0.25 → 2, 5 → 0.
+    let decimals = (0..=6)
+        .find(|&d| {
+            let scaled = step * 10f64.powi(d);
+            (scaled - scaled.round()).abs() <= 1e-6 * scaled.max(1.0)
+        })
+        .unwrap_or(6) as usize;
+    format!("{v:.decimals$}")
+}
+
 /// Four significant digits, no exponent for everyday magnitudes.
 pub fn fmt(v: f64) -> String {
     let a = v.abs();
@@ -182,6 +204,19 @@ pub fn fmt(v: f64) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Ticks carry the decimals their step needs.
+    #[test]
+    fn tick_labels_have_the_decimals_of_their_step() {
+        let t =
+            |value: f64, step_size: f64| tick_label(GridMark { value, step_size }, &(0.0..=1.0));
+        assert_eq!(t(0.5, 0.5), "0.5");
+        assert_eq!(t(1.0, 0.5), "1.0");
+        assert_eq!(t(1.25, 0.25), "1.25");
+        assert_eq!(t(2000.0, 500.0), "2000");
+        assert_eq!(t(0.3, 0.1), "0.3");
+        assert_eq!(t(0.0, 0.1), "0");
+    }
 
     /// Steps on the 1–2–5 series, nested; on a 400–2000 rpm axis with a 30 rpm minimum
     /// step: 50, 100 (not 200: 500 is no multiple of it) and 500 rpm, the labelled one;

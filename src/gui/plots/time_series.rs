@@ -57,7 +57,8 @@ pub fn series(
 pub enum Look {
     /// A simulated series: a thin line, or a filled envelope.
     Simulated,
-    /// A measured series: a wide pale line, or the outline of its envelope.
+    /// A measured series: a wide dashed line, or the dashed outline of its envelope
+    /// (issue 16: solid simulated against dashed measured, not two shades of a colour).
     Measured,
     /// A dashed thin line (for a recording's order tracks).
     Dashed,
@@ -72,8 +73,9 @@ pub fn draw(plot: &mut PlotUi<'_>, name: &str, series: Decimated, colour: Color3
         (Decimated::Points(p), Look::Measured) => {
             plot.line(
                 Line::new(name, p)
-                    .color(colour.gamma_multiply(0.45))
-                    .width(3.0),
+                    .color(colour.gamma_multiply(0.85))
+                    .width(2.2)
+                    .style(LineStyle::dashed_loose()),
             );
         }
         (Decimated::Points(p), Look::Dashed) => {
@@ -94,8 +96,9 @@ pub fn draw(plot: &mut PlotUi<'_>, name: &str, series: Decimated, colour: Color3
                 let points: Vec<[f64; 2]> = time_s.iter().zip(edge).map(|(&t, v)| [t, v]).collect();
                 plot.line(
                     Line::new(name, points)
-                        .color(colour.gamma_multiply(0.7))
-                        .width(1.5),
+                        .color(colour.gamma_multiply(0.85))
+                        .width(1.5)
+                        .style(LineStyle::dashed_loose()),
                 );
             }
         }

@@ -156,6 +156,7 @@ fn time_traces_ui(app: &mut TorsimApp, ui: &mut Ui) {
                 .height(if i == 0 { 2.0 * unit_h } else { unit_h })
                 .y_axis_min_width(Y_AXIS_W)
                 .y_grid_spacer(nice_grid())
+                .y_axis_formatter(super::tick_label)
                 .legend(legend)
                 .link_axis(time_link(), [true, false])
                 .link_cursor(time_link(), [true, false])
