@@ -148,7 +148,8 @@ fn time_traces_ui(app: &mut TorsimApp, ui: &mut Ui) {
             // Colours by rank among the series shown, so that they differ.
             let colour = |k: usize| mode_color(visible[..k].iter().filter(|v| **v).count());
             let axis = if kind == GroupKind::Speed && about_mean {
-                "IAS - mean speed [rpm] (own shaft)".to_string()
+                // Short enough for the height of the plot (issue 16: it was cut off).
+                "IAS − mean [rpm]".to_string()
             } else {
                 group.axis.clone()
             };
@@ -157,6 +158,8 @@ fn time_traces_ui(app: &mut TorsimApp, ui: &mut Ui) {
                 .y_axis_min_width(Y_AXIS_W)
                 .y_grid_spacer(nice_grid())
                 .y_axis_formatter(super::tick_label)
+                .x_grid_spacer(nice_grid())
+                .x_axis_formatter(super::tick_label)
                 .legend(legend)
                 .link_axis(time_link(), [true, false])
                 .link_cursor(time_link(), [true, false])
