@@ -41,6 +41,8 @@ mod tests_edit_structure;
 #[cfg(test)]
 mod tests_idle;
 #[cfg(test)]
+mod tests_layout;
+#[cfg(test)]
 mod tests_modal_damping;
 #[cfg(test)]
 mod tests_overwrite;
@@ -62,6 +64,9 @@ mod tests_unsaved;
 use crate::cli::error::CliError;
 use std::path::PathBuf;
 
+/// The smallest window, points: below it the panels would overlap (issue 16).
+pub const MIN_WINDOW_SIZE: [f32; 2] = [800.0, 500.0];
+
 /// Opens the window on `model_arg` (a file or `preset:NAME`); without one, on an ended
 /// window's unsaved edits, the last session's model, else the default preset
 /// ([`startup`]).
@@ -74,6 +79,7 @@ pub fn run(model_arg: Option<String>) -> Result<(), CliError> {
     let options = eframe::NativeOptions {
         viewport: egui::ViewportBuilder::default()
             .with_inner_size([1280.0, 800.0])
+            .with_min_inner_size(MIN_WINDOW_SIZE)
             .with_title("torsim"),
         ..Default::default()
     };

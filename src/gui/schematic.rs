@@ -53,8 +53,11 @@ pub fn reveal_id() -> egui::Id {
 /// The schematic, filling the available width (scrolling when the driveline is long).
 pub fn schematic_ui(app: &mut TorsimApp, ui: &mut Ui) {
     let layout = layout::layout(&app.model);
+    // Held to the panel's width: a long driveline scrolls inside it rather than widening
+    // the window's layout (issue 16: at 800 px the plots below were laid out 1158 wide).
     egui::ScrollArea::both()
         .auto_shrink([false, false])
+        .max_width(ui.available_width())
         .show(ui, |ui| {
             let size = geometry::desired_size(&layout).max(ui.available_size());
             let (rect, response) = ui.allocate_exact_size(size, Sense::click());

@@ -16,7 +16,7 @@ use torsim::diagnose::report::{
 };
 use torsim::model::{ConnectionKind, Model, RubberStiffness, parse_model, presets};
 
-fn bench() -> Model {
+pub(super) fn bench() -> Model {
     let p = presets::preset("diagnosis-bench").expect("preset");
     parse_model(p.text, "diagnosis-bench").expect("model")
 }
@@ -62,7 +62,7 @@ fn coupling_n_per_m(model: &Model) -> f64 {
 }
 
 /// A report as `diagnose` makes it: the coupling's elements 10 % too stiff.
-fn report() -> Report {
+pub(super) fn report() -> Report {
     let name = "connection.coupling.elements.radial_stiffness";
     let row = |effect: &str, after: f64, score: f64, k: usize| Candidate {
         effect: effect.into(),

@@ -21,6 +21,15 @@ pub fn candidates_ui(report: &Report, ui: &mut Ui) {
         .weak(),
     );
     let verdict = report.verdict.effect.as_str();
+    // Eight columns: in a narrow window the table scrolls sideways rather than running
+    // past the window's edge (issue 16).
+    egui::ScrollArea::horizontal()
+        .id_salt("candidates table")
+        .show(ui, |ui| table_ui(report, verdict, ui));
+}
+
+/// The grid itself.
+fn table_ui(report: &Report, verdict: &str, ui: &mut Ui) {
     egui::Grid::new("diagnosis candidates")
         .striped(true)
         .num_columns(8)

@@ -60,7 +60,7 @@ pub fn diagnosis_ui(app: &mut TorsimApp, ui: &mut Ui) {
 
 /// Add recordings…, Diagnose, the progress bar with the stage and Cancel.
 fn controls_ui(app: &mut TorsimApp, ui: &mut Ui) {
-    ui.horizontal(|ui| {
+    ui.horizontal_wrapped(|ui| {
         let d = &mut app.diagnosis;
         let busy = d.job.is_some();
         let add = ui

@@ -66,7 +66,7 @@ pub fn verdict_ui(app: &mut TorsimApp, finished: &Finished, ui: &mut Ui) {
         ))
         .weak(),
     );
-    ui.horizontal(|ui| accept_ui(app, finished, ui));
+    ui.horizontal_wrapped(|ui| accept_ui(app, finished, ui));
     // Said while the model is the accepted one, so an undo takes the line away with it.
     if finished.change() == Some(&app.model) {
         ui.label(format!("Accepted: {}.", finished.changes.join("; ")));

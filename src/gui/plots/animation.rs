@@ -50,7 +50,7 @@ pub fn animation_ui(
     inertias_kg_m2: Option<&[f64]>,
     color: Color32,
 ) {
-    ui.horizontal(|ui| {
+    ui.horizontal_wrapped(|ui| {
         let label = if state.playing { "Pause" } else { "Play" };
         if ui.button(label).clicked() {
             state.playing = !state.playing;
@@ -59,10 +59,11 @@ pub fn animation_ui(
         ui.add(egui::Slider::new(&mut state.amplitude_deg, 2.0..=60.0).suffix("° max"))
             .labelled_by(l.id);
     });
-    ui.weak(format!(
+    let note = format!(
         "shown at {VISUAL_HZ} Hz, not {:.1} Hz; rotation not to scale (largest = slider)",
         mode.frequency_hz
-    ));
+    );
+    ui.add(egui::Label::new(egui::RichText::new(note).weak()).wrap());
     if state.playing {
         let dt = ui.input(|i| f64::from(i.stable_dt).min(0.1));
         state.phase_cycles = (state.phase_cycles + dt * VISUAL_HZ).fract();

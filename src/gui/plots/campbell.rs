@@ -95,7 +95,7 @@ pub fn campbell_ui(app: &mut TorsimApp, ui: &mut Ui) {
         return;
     };
     let selected = app.plots.crossing.map(|k| (k, crossing_at(app, k)));
-    ui.horizontal(|ui| match selected {
+    ui.horizontal_wrapped(|ui| match selected {
         Some((_, Some(x))) => {
             ui.label(
                 RichText::new(format!(
@@ -163,10 +163,11 @@ fn diagram_ui(
         .filter(|f| f.iter().all(|v| *v > f_top))
         .count();
     if above > 0 {
-        ui.weak(format!(
+        let text = format!(
             "{above} mode(s) above {f_top:.0} Hz, the highest order at top speed: drawn beyond \
              the view (zoom out), not listed"
-        ));
+        );
+        ui.add(egui::Label::new(RichText::new(text).weak()).wrap());
     }
     let strong = ui.visuals().strong_text_color();
     let faint = ui.visuals().weak_text_color().gamma_multiply(0.5);

@@ -178,7 +178,9 @@ pub fn traces_data(app: &TorsimApp) -> Option<PlotData> {
 
 /// Tabs, the export button and the selected plot.
 pub fn central_ui(app: &mut TorsimApp, ui: &mut Ui) {
-    ui.horizontal(|ui| {
+    // Wrapped, so that a narrow window puts the tabs on two lines rather than past its
+    // edge (issue 16).
+    ui.horizontal_wrapped(|ui| {
         for (tab, label) in [
             (Tab::Campbell, "Campbell"),
             (Tab::Modes, "Mode shapes"),

@@ -211,12 +211,15 @@ pub fn plot_data(app: &TorsimApp) -> Option<PlotData> {
 fn energy_table_ui(ui: &mut Ui, system: &System, shares: &[f64]) {
     let shares = shares_by_connection(system, shares);
     let largest = shares.iter().map(|s| s.1).fold(0.0, f64::max);
+    // The bars share the column with the names: at most 180 points, less in a narrow
+    // window (issue 16: at 800 px they ran past its edge).
+    let bar_width = (0.4 * ui.available_width()).clamp(40.0, 180.0);
     egui::Grid::new("strain_energy")
         .num_columns(2)
         .striped(true)
         .show(ui, |ui| {
             ui.strong("connection");
-            ui.strong("share of the strain energy");
+            ui.strong("share");
             ui.end_row();
             for (connection, share) in shares {
                 let name = system
@@ -230,7 +233,7 @@ fn energy_table_ui(ui: &mut Ui, system: &System, shares: &[f64]) {
                 }
                 ui.add(
                     egui::ProgressBar::new(share as f32)
-                        .desired_width(180.0)
+                        .desired_width(bar_width)
                         .text(format!("{:.1} %", 100.0 * share)),
                 );
                 ui.end_row();

@@ -83,7 +83,7 @@ pub fn plot_data(app: &TorsimApp) -> Option<PlotData> {
 
 /// Quantity and station/connection; true when "zoom to the operating range" was clicked.
 fn selectors_ui(app: &mut TorsimApp, r: &Response, ui: &mut Ui) -> bool {
-    ui.horizontal(|ui| {
+    ui.horizontal_wrapped(|ui| {
         let state = &mut app.plots;
         egui::ComboBox::from_label("quantity")
             .selected_text(state.quantity.label())

@@ -1,0 +1,97 @@
+//! Issue 16, deliverable 3: nothing runs off the right edge of the window. Every tab of
+//! the real app, at 1280 × 800 and 1920 × 1080 (and the smallest supported size), is
+//! laid out with its results (and the Diagnosis tab with a report), and every widget
+//! AccessKit reports must end inside the
+//! window's width (panels wrap or scroll vertically instead; only the schematic scrolls
+//! sideways, by design).
+
+use super::app::{Tab, TorsimApp};
+use egui_kittest::Harness;
+use egui_kittest::kittest::NodeT;
+use std::time::{Duration, Instant};
+use torsim::model::{parse_model, presets};
+
+fn harness(preset: &'static str, size: [f32; 2]) -> Harness<'static, TorsimApp> {
+    let mut h = Harness::builder().with_size(size).build_eframe(move |cc| {
+        let ctx = cc.egui_ctx.clone();
+        let p = presets::preset(preset).expect("preset");
+        let model = parse_model(p.text, p.name).expect("model");
+        TorsimApp::new(model, None, move || ctx.request_repaint())
+    });
+    let start = Instant::now();
+    while h.state().results.ratings.is_none() || h.state().results.live.is_none() {
+        assert!(start.elapsed() < Duration::from_secs(60), "timed out");
+        std::thread::sleep(Duration::from_millis(20));
+        h.step();
+    }
+    h
+}
+
+/// The smallest window the app allows (`gui::run`'s minimum inner size).
+const MIN_SIZE: [f32; 2] = super::MIN_WINDOW_SIZE;
+
+/// The labels of widgets that end right of the window, with how far.
+fn off_the_right_edge(h: &Harness<'static, TorsimApp>, width: f32) -> Vec<String> {
+    let ppp = h.ctx.pixels_per_point();
+    h.root()
+        .children_recursive()
+        .filter_map(|n| {
+            let node = n.accesskit_node();
+            let label = node.label().unwrap_or_default();
+            let b = node.bounding_box()?;
+            let (x0, x1) = (b.x0 as f32 / ppp, b.x1 as f32 / ppp);
+            // The schematic scrolls sideways when the driveline is longer than the window.
+            let scrolls = label == super::schematic::CANVAS_LABEL;
+            (x1 > width + 1.0 && x1 > x0 && !scrolls).then(|| {
+                format!(
+                    "{label:?} {:?} {:?} ends at {x1:.0} (from {x0:.0})",
+                    node.role(),
+                    node.value()
+                )
+            })
+        })
+        .collect()
+}
+
+#[test]
+fn no_tab_runs_off_the_window() {
+    for size in [[1280.0, 800.0], [1920.0, 1080.0], MIN_SIZE] {
+        for preset in ["cng-genset", "genset-20dof"] {
+            let mut h = harness(preset, size);
+            for tab in [
+                Tab::Campbell,
+                Tab::Modes,
+                Tab::Response,
+                Tab::Traces,
+                Tab::Diagnosis,
+            ] {
+                h.state_mut().tab = tab;
+                h.run_steps(4);
+                let off = off_the_right_edge(&h, size[0]);
+                assert!(off.is_empty(), "{preset} at {size:?}, {tab:?}: {off:#?}");
+            }
+        }
+    }
+}
+
+/// The Diagnosis tab with a report (verdict, map, candidates table, overlays) fits the
+/// window's width at both sizes.
+#[test]
+fn a_diagnosis_report_fits_the_window() {
+    use super::diagnosis::finished::Finished;
+    use super::tests_diagnosis::{bench, report};
+    // At the smallest window the candidates table scrolls sideways (eight columns).
+    for size in [[1280.0, 800.0], [1920.0, 1080.0]] {
+        let mut h = Harness::builder().with_size(size).build_eframe(|cc| {
+            let ctx = cc.egui_ctx.clone();
+            TorsimApp::new(bench(), None, move || ctx.request_repaint())
+        });
+        h.state_mut().tab = Tab::Diagnosis;
+        h.state_mut()
+            .diagnosis
+            .show(Finished::new(bench(), report()));
+        h.run_steps(4);
+        let off = off_the_right_edge(&h, size[0]);
+        assert!(off.is_empty(), "{size:?}: {off:#?}");
+    }
+}
