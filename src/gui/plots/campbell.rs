@@ -4,12 +4,12 @@
 //! ([`super::crossing`]), and the selection stays while edits keep that crossing.
 
 use super::series::{fmt, grid_125};
+use super::side_legend::{Entry, with_side_legend};
 use super::{CrossingKey, PlotData, mode_color};
 use crate::gui::app::TorsimApp;
 use egui::{Color32, RichText, Ui};
 use egui_plot::{
-    Corner, HoverPosition, Legend, Line, MarkerShape, Plot, PlotPoint, PlotPoints, Points, Span,
-    Text,
+    HoverPosition, Line, MarkerShape, Plot, PlotPoint, PlotPoints, Points, Span, Text,
 };
 use torsim::modal::Crossing;
 use torsim::model::Model;
@@ -139,6 +139,15 @@ pub fn campbell_ui(app: &mut TorsimApp, ui: &mut Ui) {
     }
 }
 
+/// The legend names of the crossings.
+const MINOR: &str = "crossings, other orders";
+const MAJOR: &str = "crossings, major orders";
+
+/// A mode's legend name.
+fn mode_name(i: usize, f_hz: f64) -> String {
+    format!("mode {} · {:.2} Hz", i + 1, f_hz)
+}
+
 fn diagram_ui(
     app: &mut TorsimApp,
     ui: &mut Ui,
@@ -172,14 +181,34 @@ fn diagram_ui(
     let strong = ui.visuals().strong_text_color();
     let faint = ui.visuals().weak_text_color().gamma_multiply(0.5);
     let (hover_major, hover_minor) = (major.clone(), minor.clone());
-    let response =
-        super::fit_for_model(ui, Plot::new("campbell"), "campbell", app.plots.model_epoch)
+    // The legend beside the plot (issue 16): the modes of the opening view, and the two
+    // kinds of crossing.
+    let mut entries: Vec<Entry> = diagram
+        .frequency_hz
+        .iter()
+        .enumerate()
+        .filter(|(_, f)| !f.iter().all(|v| *v > f_top))
+        .map(|(i, f)| Entry {
+            name: mode_name(i, f[0]),
+            color: mode_color(i),
+            dashed: false,
+        })
+        .collect();
+    entries.push(Entry {
+        name: MINOR.into(),
+        color: Color32::from_gray(170),
+        dashed: false,
+    });
+    entries.push(Entry {
+        name: MAJOR.into(),
+        color: Color32::from_rgb(255, 200, 0),
+        dashed: false,
+    });
+    let epoch = app.plots.model_epoch;
+    let height = ui.available_height();
+    let response = with_side_legend(ui, "campbell", &entries, height, |ui, hidden| {
+        super::fit_for_model(ui, Plot::new("campbell"), "campbell", epoch)
             .id(egui::Id::unique(CAMPBELL_PLOT_ID))
-            .legend(
-                Legend::default()
-                    .position(Corner::LeftTop)
-                    .follow_insertion_order(true),
-            )
             .default_x_bounds(n0, n1)
             .default_y_bounds(0.0, f_top)
             .x_axis_label("engine speed [rpm]")
@@ -252,24 +281,30 @@ fn diagram_ui(
                     let name = if f.iter().all(|v| *v > f_top) {
                         String::new()
                     } else {
-                        format!("mode {} · {:.2} Hz", i + 1, f[0])
+                        mode_name(i, f[0])
                     };
-                    plot.line(Line::new(name, line).color(mode_color(i)).width(2.0));
+                    if !hidden.contains(&name) {
+                        plot.line(Line::new(name, line).color(mode_color(i)).width(2.0));
+                    }
                 }
                 let at = |v: &[Crossing]| -> Vec<[f64; 2]> {
                     v.iter().map(|x| [x.speed_rpm, x.frequency_hz]).collect()
                 };
-                plot.points(
-                    Points::new("crossings, other orders", at(&minor))
-                        .radius(3.0)
-                        .filled(false)
-                        .color(Color32::from_gray(170)),
-                );
-                plot.points(
-                    Points::new("crossings, major orders", at(&major))
-                        .radius(4.5)
-                        .color(Color32::from_rgb(255, 200, 0)),
-                );
+                if !hidden.contains(MINOR) {
+                    plot.points(
+                        Points::new(MINOR, at(&minor))
+                            .radius(3.0)
+                            .filled(false)
+                            .color(Color32::from_gray(170)),
+                    );
+                }
+                if !hidden.contains(MAJOR) {
+                    plot.points(
+                        Points::new(MAJOR, at(&major))
+                            .radius(4.5)
+                            .color(Color32::from_rgb(255, 200, 0)),
+                    );
+                }
                 if let Some(x) = selected {
                     plot.points(
                         Points::new("", vec![[x.speed_rpm, x.frequency_hz]])
@@ -280,7 +315,8 @@ fn diagram_ui(
                             .allow_hover(false),
                     );
                 }
-            });
+            })
+    });
     if response.response.clicked()
         && let Some(pointer) = response.response.interact_pointer_pos()
     {

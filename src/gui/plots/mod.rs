@@ -15,6 +15,7 @@ mod recording;
 mod response;
 mod run_controls;
 mod series;
+pub mod side_legend;
 mod stft;
 mod time_series;
 mod traces;

@@ -5,9 +5,10 @@
 use super::PlotData;
 use super::quantity::{Quantity, response_series};
 use super::series::{Series, grid_125, hover_label, plot_data as series_data};
+use super::side_legend::{Entry, with_side_legend};
 use crate::gui::app::TorsimApp;
 use egui::{Color32, Ui};
-use egui_plot::{Legend, Plot, PlotBounds, Span, VLine};
+use egui_plot::{Plot, PlotBounds, Span, VLine};
 use torsim::model::ConnectionKind;
 use torsim::response::Response;
 
@@ -144,50 +145,61 @@ pub fn response_ui(app: &mut TorsimApp, ui: &mut Ui) {
     let quantity = app.plots.quantity;
     let operating = app.model.operation.operating_range_rpm;
     let marker = app.plots.crossing.and_then(|k| super::crossing_at(app, k));
-    super::fit_for_model(ui, Plot::new("response"), "response", app.plots.model_epoch)
-        .legend(Legend::default().follow_insertion_order(true))
-        .x_axis_label("engine speed [rpm]")
-        .y_axis_label(quantity.y_label())
-        .x_grid_spacer(grid_125)
-        .y_grid_spacer(grid_125)
-        .x_axis_formatter(super::tick_label)
-        .y_axis_formatter(super::tick_label)
-        .label_formatter(hover_label("rpm", quantity.unit()))
-        .include_y(0.0)
-        .show(ui, |plot| {
-            if let Some([lo, hi]) = operating {
-                plot.span(
-                    Span::new("operating range", lo..=hi)
-                        .fill(Color32::from_rgba_unmultiplied(60, 160, 60, 25)),
-                );
-            }
-            if let Some(x) = marker {
-                plot.vline(
-                    VLine::new(
-                        format!(
-                            "order {} × mode {} at {:.0} rpm",
-                            x.order, x.mode, x.speed_rpm
-                        ),
-                        x.speed_rpm,
-                    )
-                    .color(Color32::from_rgb(255, 200, 0))
-                    .allow_hover(false),
-                );
-            }
-            for s in &series {
-                plot.line(s.line());
-            }
-            if zoom && let Some([lo, hi]) = operating {
-                let top = series
-                    .iter()
-                    .flat_map(|s| &s.points)
-                    .filter(|p| (lo..=hi).contains(&p[0]))
-                    .map(|p| p[1])
-                    .fold(0.0, f64::max);
-                plot.set_plot_bounds(PlotBounds::from_min_max(
-                    [lo, 0.0],
-                    [hi, 1.1 * top.max(1e-9)],
-                ));
-            }
-        });
+    let entries: Vec<Entry> = series
+        .iter()
+        .map(|s| Entry {
+            name: s.name.clone(),
+            color: s.color,
+            dashed: s.dashed,
+        })
+        .collect();
+    let epoch = app.plots.model_epoch;
+    let height = ui.available_height();
+    with_side_legend(ui, "response", &entries, height, |ui, hidden| {
+        super::fit_for_model(ui, Plot::new("response"), "response", epoch)
+            .x_axis_label("engine speed [rpm]")
+            .y_axis_label(quantity.y_label())
+            .x_grid_spacer(grid_125)
+            .y_grid_spacer(grid_125)
+            .x_axis_formatter(super::tick_label)
+            .y_axis_formatter(super::tick_label)
+            .label_formatter(hover_label("rpm", quantity.unit()))
+            .include_y(0.0)
+            .show(ui, |plot| {
+                if let Some([lo, hi]) = operating {
+                    plot.span(
+                        Span::new("operating range", lo..=hi)
+                            .fill(Color32::from_rgba_unmultiplied(60, 160, 60, 25)),
+                    );
+                }
+                if let Some(x) = marker {
+                    plot.vline(
+                        VLine::new(
+                            format!(
+                                "order {} × mode {} at {:.0} rpm",
+                                x.order, x.mode, x.speed_rpm
+                            ),
+                            x.speed_rpm,
+                        )
+                        .color(Color32::from_rgb(255, 200, 0))
+                        .allow_hover(false),
+                    );
+                }
+                for s in series.iter().filter(|s| !hidden.contains(&s.name)) {
+                    plot.line(s.line());
+                }
+                if zoom && let Some([lo, hi]) = operating {
+                    let top = series
+                        .iter()
+                        .flat_map(|s| &s.points)
+                        .filter(|p| (lo..=hi).contains(&p[0]))
+                        .map(|p| p[1])
+                        .fold(0.0, f64::max);
+                    plot.set_plot_bounds(PlotBounds::from_min_max(
+                        [lo, 0.0],
+                        [hi, 1.1 * top.max(1e-9)],
+                    ));
+                }
+            });
+    });
 }
