@@ -20,16 +20,8 @@ pub fn verdict_ui(app: &mut TorsimApp, finished: &Finished, ui: &mut Ui) {
     });
     // Issue 16: the physics in a sentence with its place and size, and the confidence
     // said as what it measures.
-    ui.add(
-        egui::Label::new(
-            RichText::new(torsim::diagnose::words::effect_sentence(
-                &v.effect,
-                &v.parameters,
-            ))
-            .strong(),
-        )
-        .wrap(),
-    );
+    let sentence = torsim::diagnose::words::effect_sentence(&v.effect, &v.parameters);
+    ui.add(egui::Label::new(RichText::new(&sentence).strong()).wrap());
     ui.label(format!(
         "Confidence {:.0} %: on the recordings the fit did not use, the verdict's misfit \
          (χ²/N) is {:.0} % below that of the next best explanation.",
@@ -45,7 +37,13 @@ pub fn verdict_ui(app: &mut TorsimApp, finished: &Finished, ui: &mut Ui) {
             .collect();
         ui.label(format!("Fitted: {}", parameters.join(", ")));
     }
-    ui.label(&v.explanation);
+    // The explanation opens with the same sentence: said once.
+    ui.label(
+        v.explanation
+            .strip_prefix(sentence.as_str())
+            .unwrap_or(&v.explanation)
+            .trim_start(),
+    );
     let f = &r.fit;
     let on = if f.validated_on.is_empty() {
         "no held-out data".to_string()
