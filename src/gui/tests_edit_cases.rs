@@ -54,6 +54,13 @@ fn thermal(m: &mut Model) -> &mut Thermal {
     })
 }
 
+fn rating(m: &mut Model) -> &mut torsim::model::CouplingRating {
+    rubber(m, 7)
+        .rating
+        .as_mut()
+        .expect("cng-genset's coupling is rated")
+}
+
 /// (valid model, how to break it): cng-genset (elements, polynomials, pressure by load,
 /// load, expectations) and test-rig-45sh (gear, direct rubber, ground, one pressure curve,
 /// harmonics, orders, regimes).
@@ -100,6 +107,10 @@ pub fn cases() -> Vec<(Model, Breaker)> {
         Box::new(|m| thermal(m).capacity_j_per_k = 0.0),
         Box::new(|m| thermal(m).conductance_w_per_k = 0.0),
         Box::new(|m| thermal(m).ambient_c = f64::NAN),
+        // cng-genset's coupling is rated (issue 16).
+        Box::new(|m| rating(m).max_torque_nm = Some(1000.0)),
+        Box::new(|m| rating(m).permissible_vibratory_torque_nm = Some(-1.0)),
+        Box::new(|m| rating(m).ambient_c = 95.0),
         Box::new(|m| engine(m).at.truncate(2)),
         Box::new(|m| engine(m).at[3] = "nowhere".into()),
         Box::new(|m| engine(m).cylinders = 0),

@@ -71,6 +71,48 @@ impl CouplingRating {
         (f_hz.abs() / 10.0).sqrt().max(1.0)
     }
 
+    /// What is wrong with these values, if anything: the key under `rating` and why (the
+    /// same rules the reader applies, for a rating edited in memory).
+    pub fn problem(&self) -> Option<(&'static str, String)> {
+        let positive = |v: f64| v.is_finite() && v > 0.0;
+        if !positive(self.rated_torque_nm) {
+            return Some((
+                "rated_torque_nm",
+                format!("must be > 0 (got {})", self.rated_torque_nm),
+            ));
+        }
+        if let Some(m) = self.max_torque_nm
+            && !(m.is_finite() && m >= self.rated_torque_nm)
+        {
+            return Some((
+                "max_torque_nm",
+                format!(
+                    "T_Kmax {m} N·m is below the rated torque {} N·m",
+                    self.rated_torque_nm
+                ),
+            ));
+        }
+        for (key, v) in [
+            (
+                "permissible_vibratory_torque_nm",
+                self.permissible_vibratory_torque_nm,
+            ),
+            ("permissible_power_loss_w", self.permissible_power_loss_w),
+        ] {
+            if let Some(v) = v.filter(|v| !positive(*v)) {
+                return Some((key, format!("must be > 0 (got {v})")));
+            }
+        }
+        let (t_u, t_p) = (self.ambient_c, self.permissible_temperature_c);
+        if !(t_u.is_finite() && t_p > CATALOGUE_AMBIENT_C && t_p > t_u) {
+            return Some((
+                "permissible_temperature_c",
+                format!("must be above both 30 °C and the ambient {t_u} °C (got {t_p})"),
+            ));
+        }
+        None
+    }
+
     /// The power loss the stage sheds continuously at its `ambient_c`, W.
     pub fn permissible_power_loss_at_ambient_w(&self) -> Option<f64> {
         let rise_now = self.permissible_temperature_c - self.ambient_c;

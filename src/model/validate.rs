@@ -269,6 +269,9 @@ fn rubber(key: &str, r: &RubberStage) -> Check {
             )?;
         }
     }
+    if let Some((sub, why)) = r.rating.as_ref().and_then(|rt| rt.problem()) {
+        fail(k(&format!("rating.{sub}")), why)?;
+    }
     if let Some(t) = &r.thermal {
         positive(&k("thermal.capacity_j_per_k"), t.capacity_j_per_k)?;
         positive(&k("thermal.conductance_w_per_k"), t.conductance_w_per_k)?;

@@ -14,6 +14,7 @@ mod inertias;
 mod load;
 mod modal_damping;
 mod operation;
+mod rating;
 mod rubber;
 mod rubber_polys;
 mod shaft;

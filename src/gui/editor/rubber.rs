@@ -127,6 +127,7 @@ pub fn rubber_ui(ui: &mut Ui, cx: &mut EditCtx, key: &str, name: &str, r: &mut R
         rubber_polys::poly_ui(ui, cx, key, name, info, poly);
     }
     thermal_ui(ui, cx, key, name, &mut r.thermal);
+    super::rating::rating_ui(ui, cx, key, name, &mut r.rating);
 }
 
 /// The other way of giving the same static stiffness: elements (8, 4 per side, 0.2 m
