@@ -115,7 +115,7 @@ fn scan(dir: &Path, skip_running: bool) -> Vec<Orphan> {
             Some((modified, Orphan { file, model, path }))
         })
         .collect();
-    found.sort_by(|a, b| b.0.cmp(&a.0));
+    found.sort_by_key(|f| std::cmp::Reverse(f.0));
     found.into_iter().map(|(_, o)| o).collect()
 }
 

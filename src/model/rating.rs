@@ -135,47 +135,18 @@ pub(crate) fn read(t: &Tab) -> Result<Option<CouplingRating>, ModelError> {
         "ambient_c",
         "permissible_temperature_c",
     ])?;
-    let positive = |key: &str, v: f64| -> Result<f64, ModelError> {
-        if v.is_finite() && v > 0.0 {
-            Ok(v)
-        } else {
-            Err(ModelError::at(r.key(key), format!("must be > 0 (got {v})")))
-        }
+    let rating = CouplingRating {
+        rated_torque_nm: r.f64("rated_torque_nm")?,
+        max_torque_nm: r.opt_f64("max_torque_nm")?,
+        permissible_vibratory_torque_nm: r.opt_f64("permissible_vibratory_torque_nm")?,
+        permissible_power_loss_w: r.opt_f64("permissible_power_loss_w")?,
+        ambient_c: r.f64_or("ambient_c", CATALOGUE_AMBIENT_C)?,
+        permissible_temperature_c: r.f64_or("permissible_temperature_c", 80.0)?,
     };
-    let rated = positive("rated_torque_nm", r.f64("rated_torque_nm")?)?;
-    let max = match r.opt_f64("max_torque_nm")? {
-        Some(v) if v < rated => {
-            return Err(ModelError::at(
-                r.key("max_torque_nm"),
-                format!("T_Kmax {v} N·m is below the rated torque {rated} N·m"),
-            ));
-        }
-        v => v,
-    };
-    let opt_positive = |key: &str| -> Result<Option<f64>, ModelError> {
-        r.opt_f64(key)?.map(|v| positive(key, v)).transpose()
-    };
-    let ambient_c = r.f64_or("ambient_c", CATALOGUE_AMBIENT_C)?;
-    let permissible_temperature_c = r.f64_or("permissible_temperature_c", 80.0)?;
-    if !(permissible_temperature_c > CATALOGUE_AMBIENT_C && permissible_temperature_c > ambient_c)
-        || !ambient_c.is_finite()
-    {
-        return Err(ModelError::at(
-            r.key("permissible_temperature_c"),
-            format!(
-                "must be above both 30 °C and the ambient {ambient_c} °C (got \
-                 {permissible_temperature_c})"
-            ),
-        ));
+    match rating.problem() {
+        Some((key, why)) => Err(ModelError::at(r.key(key), why)),
+        None => Ok(Some(rating)),
     }
-    Ok(Some(CouplingRating {
-        rated_torque_nm: rated,
-        max_torque_nm: max,
-        permissible_vibratory_torque_nm: opt_positive("permissible_vibratory_torque_nm")?,
-        permissible_power_loss_w: opt_positive("permissible_power_loss_w")?,
-        ambient_c,
-        permissible_temperature_c,
-    }))
 }
 
 /// The `(key, value)` pairs of `rating`'s inline table, defaults left out.
