@@ -116,9 +116,11 @@ pub fn status_ui(app: &mut TorsimApp, ui: &mut Ui) {
     ui.horizontal_wrapped(|ui| {
         if running {
             let stage = if progress < 0.1 { " (settling)" } else { "" };
+            // Room for Cancel beside it in a narrow window (issue 16).
+            let width = (ui.available_width() - 90.0).clamp(120.0, 360.0);
             ui.add(
                 egui::ProgressBar::new(progress)
-                    .desired_width(360.0)
+                    .desired_width(width)
                     .text(format!("{label}: {pct:.0} %{stage}")),
             );
             if ui.button("Cancel").clicked() {
