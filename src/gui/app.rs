@@ -46,6 +46,8 @@ pub struct Results {
     pub response: Option<Arc<Response>>,
     /// The coupling ratings on that response, and the linear range.
     pub ratings: Option<Arc<super::worker::RatingsResult>>,
+    /// The engine's working cycle at full load.
+    pub engine_cycle: Option<Arc<torsim::physics::engine_cycle::EngineCycle>>,
     /// The finished time run.
     pub trace: Option<Arc<Simulation>>,
     /// Progress of the time run.
@@ -267,6 +269,7 @@ impl TorsimApp {
                 }
                 SimResult::Response(g, r) if g == current => self.results.response = Some(r),
                 SimResult::Ratings(g, r) if g == current => self.results.ratings = Some(r),
+                SimResult::EngineCycle(g, c) if g == current => self.results.engine_cycle = Some(c),
                 SimResult::Trace(g, t) if g == current => {
                     self.results.trace = Some(t);
                     self.results.trace_progress = 1.0;

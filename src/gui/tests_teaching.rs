@@ -71,3 +71,37 @@ fn a_crossing_runs_the_time_domain_at_its_speed() {
         app.trace_speed_rpm
     );
 }
+
+/// The engine editor draws the working cycle the simulation thread computed: on
+/// cng-genset, six cylinders' mean gas torque is 250 kW at 1800 rpm (seed 000).
+#[test]
+fn the_engine_cycle_comes_from_the_simulation_thread() {
+    let mut h = Harness::builder()
+        .with_size([1280.0, 2600.0])
+        .build_eframe(|cc| {
+            let ctx = cc.egui_ctx.clone();
+            let p = presets::preset("cng-genset").expect("preset");
+            let model = parse_model(p.text, p.name).expect("model");
+            TorsimApp::new(model, None, move || ctx.request_repaint())
+        });
+    let start = Instant::now();
+    while h.state().results.engine_cycle.is_none() {
+        assert!(start.elapsed() < Duration::from_secs(30), "timed out");
+        std::thread::sleep(Duration::from_millis(20));
+        h.step();
+    }
+    let mean = h
+        .state()
+        .results
+        .engine_cycle
+        .as_ref()
+        .expect("cycle")
+        .mean_torque_nm;
+    assert!(
+        (mean - 250e3 / (1800.0 * std::f64::consts::TAU / 60.0)).abs() < 1.0,
+        "{mean}"
+    );
+    h.get_by_label("Engine and harmonics").click();
+    h.run_steps(4);
+    h.get_by_label_contains("cycle at full load");
+}

@@ -52,6 +52,8 @@ pub enum SimResult {
     /// The coupling ratings checked on that response, and where it leaves the linear
     /// range ([`torsim::ratings`]).
     Ratings(u64, Arc<RatingsResult>),
+    /// The engine's working cycle at full load, for the engine editor.
+    EngineCycle(u64, Arc<torsim::physics::engine_cycle::EngineCycle>),
     /// The time run starts settling; what runs, for a person.
     TraceRunning(u64, String),
     /// The time run starts recording: the layout of its chunks.
@@ -240,6 +242,10 @@ pub fn compute(
             return None;
         }
     };
+    if let Some(engine) = &model.engine {
+        let cycle = torsim::physics::engine_cycle::engine_cycle(engine, 1.0);
+        send(SimResult::EngineCycle(generation, Arc::new(cycle)));
+    }
     let [from, to] = model.operation.speed_range_rpm.unwrap_or([100.0, 3000.0]);
     let speeds = speed_grid(from, to, (to - from) / 200.0);
     let orders = model.orders();

@@ -8,6 +8,7 @@
 pub mod distributed;
 pub mod element;
 pub mod engine;
+pub mod engine_cycle;
 pub mod error;
 pub mod excitation;
 pub mod matrices;

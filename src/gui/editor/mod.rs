@@ -8,6 +8,7 @@
 mod add_connection;
 mod connections;
 mod engine;
+mod engine_cycle;
 mod expect;
 pub mod fields;
 mod inertias;
@@ -123,7 +124,13 @@ pub fn driveline_ui(app: &mut TorsimApp, ui: &mut Ui) {
                     .show(ui, |ui| match k {
                         0 => inertias::inertias_ui(ui, &mut cx, &mut app.model, &mut app.stations),
                         1 => connections::connections_ui(ui, &mut cx, &mut app.model),
-                        2 => engine::engine_ui(ui, &mut cx, &mut app.model),
+                        2 => {
+                            engine::engine_ui(ui, &mut cx, &mut app.model);
+                            let cycle = app.results.engine_cycle.clone();
+                            if app.model.engine.is_some() {
+                                engine_cycle::cycle_ui(ui, cycle.as_deref());
+                            }
+                        }
                         3 => load::load_ui(ui, &mut cx, &mut app.model),
                         4 => modal_damping::modal_damping_ui(ui, &mut cx, &mut app.model),
                         5 => operation::operation_ui(ui, &mut cx, &mut app.model),
