@@ -55,6 +55,8 @@ mod tests_recovery;
 #[cfg(test)]
 mod tests_shaft;
 #[cfg(test)]
+mod tests_support;
+#[cfg(test)]
 mod tests_teaching;
 #[cfg(test)]
 mod tests_traces;

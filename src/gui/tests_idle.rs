@@ -5,21 +5,14 @@
 //! plays, at 30 frames a second. `scripts/gui-idle-cpu.sh` measures the real window.
 
 use super::app::TorsimApp;
+use super::tests_support::{app_on, step_until};
 use egui::ViewportId;
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
-use std::time::{Duration, Instant};
-use torsim::model::{parse_model, presets};
+use std::time::Duration;
 
 fn harness() -> Harness<'static, TorsimApp> {
-    Harness::builder()
-        .with_size([1280.0, 800.0])
-        .build_eframe(|cc| {
-            let ctx = cc.egui_ctx.clone();
-            let p = presets::preset("two-inertia").expect("preset");
-            let model = parse_model(p.text, p.name).expect("model");
-            TorsimApp::new(model, None, move || ctx.request_repaint())
-        })
+    app_on("two-inertia", [1280.0, 800.0])
 }
 
 /// Every result of the worker is in: modes, response, the finished time run and its
@@ -35,12 +28,7 @@ fn all_in(a: &TorsimApp) -> bool {
 
 /// Steps until the app is quiet, then asserts that three more frames ask for nothing.
 fn assert_idle(h: &mut Harness<'static, TorsimApp>, what: &str) {
-    let start = Instant::now();
-    while !all_in(h.state()) {
-        assert!(start.elapsed() < Duration::from_secs(60), "timed out");
-        std::thread::sleep(Duration::from_millis(20));
-        h.step();
-    }
+    step_until(h, all_in);
     h.remove_cursor();
     h.run_steps(6);
     for _ in 0..3 {

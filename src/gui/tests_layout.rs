@@ -1,29 +1,19 @@
 //! Issue 16, deliverable 3: nothing runs off the right edge of the window. Every tab of
 //! the real app, at 1280 × 800 and 1920 × 1080 (and the smallest supported size), is
 //! laid out with its results (and the Diagnosis tab with a report), and every widget
-//! AccessKit reports must end inside the
-//! window's width (panels wrap or scroll vertically instead; only the schematic scrolls
-//! sideways, by design).
+//! AccessKit reports must end inside the window's width (panels wrap or scroll vertically
+//! instead; only the schematic scrolls sideways, by design).
 
 use super::app::{Tab, TorsimApp};
+use super::tests_support::{app_on, step_until};
 use egui_kittest::Harness;
 use egui_kittest::kittest::NodeT;
-use std::time::{Duration, Instant};
-use torsim::model::{parse_model, presets};
 
 fn harness(preset: &'static str, size: [f32; 2]) -> Harness<'static, TorsimApp> {
-    let mut h = Harness::builder().with_size(size).build_eframe(move |cc| {
-        let ctx = cc.egui_ctx.clone();
-        let p = presets::preset(preset).expect("preset");
-        let model = parse_model(p.text, p.name).expect("model");
-        TorsimApp::new(model, None, move || ctx.request_repaint())
+    let mut h = app_on(preset, size);
+    step_until(&mut h, |a| {
+        a.results.ratings.is_some() && a.results.live.is_some()
     });
-    let start = Instant::now();
-    while h.state().results.ratings.is_none() || h.state().results.live.is_none() {
-        assert!(start.elapsed() < Duration::from_secs(60), "timed out");
-        std::thread::sleep(Duration::from_millis(20));
-        h.step();
-    }
     h
 }
 

@@ -5,26 +5,13 @@
 
 use super::app::{Tab, TorsimApp};
 use super::plots::{Quantity, plot_data};
+use super::tests_support::{app_on, step_until};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
-use std::time::{Duration, Instant};
-use torsim::model::{parse_model, presets};
 
 fn harness(preset: &'static str) -> Harness<'static, TorsimApp> {
-    let mut h = Harness::builder()
-        .with_size([1280.0, 800.0])
-        .build_eframe(move |cc| {
-            let ctx = cc.egui_ctx.clone();
-            let p = presets::preset(preset).expect("preset");
-            let model = parse_model(p.text, p.name).expect("model");
-            TorsimApp::new(model, None, move || ctx.request_repaint())
-        });
-    let start = Instant::now();
-    while h.state().results.ratings.is_none() {
-        assert!(start.elapsed() < Duration::from_secs(30), "timed out");
-        std::thread::sleep(Duration::from_millis(20));
-        h.step();
-    }
+    let mut h = app_on(preset, [1280.0, 800.0]);
+    step_until(&mut h, |a| a.results.ratings.is_some());
     h.state_mut().tab = Tab::Response;
     h.run_steps(3);
     h

@@ -5,21 +5,13 @@
 
 use super::app::{Tab, TorsimApp};
 use super::plots::CrossingKey;
+use super::tests_support::{app_on, step_until};
 use super::trace_state::TraceMode;
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
-use std::time::{Duration, Instant};
-use torsim::model::{parse_model, presets};
 
 fn harness() -> Harness<'static, TorsimApp> {
-    Harness::builder()
-        .with_size([1280.0, 800.0])
-        .build_eframe(|cc| {
-            let ctx = cc.egui_ctx.clone();
-            let p = presets::preset("two-inertia").expect("preset");
-            let model = parse_model(p.text, p.name).expect("model");
-            TorsimApp::new(model, None, move || ctx.request_repaint())
-        })
+    app_on("two-inertia", [1280.0, 800.0])
 }
 
 #[test]
@@ -49,12 +41,7 @@ fn every_tab_has_its_explanation() {
 #[test]
 fn a_crossing_runs_the_time_domain_at_its_speed() {
     let mut h = harness();
-    let start = Instant::now();
-    while h.state().results.campbell.is_none() {
-        assert!(start.elapsed() < Duration::from_secs(30), "timed out");
-        std::thread::sleep(Duration::from_millis(20));
-        h.step();
-    }
+    step_until(&mut h, |a| a.results.campbell.is_some());
     h.state_mut().plots.crossing = Some(CrossingKey {
         order: 2.0,
         mode: 1,
@@ -76,20 +63,8 @@ fn a_crossing_runs_the_time_domain_at_its_speed() {
 /// cng-genset, six cylinders' mean gas torque is 250 kW at 1800 rpm (seed 000).
 #[test]
 fn the_engine_cycle_comes_from_the_simulation_thread() {
-    let mut h = Harness::builder()
-        .with_size([1280.0, 2600.0])
-        .build_eframe(|cc| {
-            let ctx = cc.egui_ctx.clone();
-            let p = presets::preset("cng-genset").expect("preset");
-            let model = parse_model(p.text, p.name).expect("model");
-            TorsimApp::new(model, None, move || ctx.request_repaint())
-        });
-    let start = Instant::now();
-    while h.state().results.engine_cycle.is_none() {
-        assert!(start.elapsed() < Duration::from_secs(30), "timed out");
-        std::thread::sleep(Duration::from_millis(20));
-        h.step();
-    }
+    let mut h = app_on("cng-genset", [1280.0, 2600.0]);
+    step_until(&mut h, |a| a.results.engine_cycle.is_some());
     let mean = h
         .state()
         .results
