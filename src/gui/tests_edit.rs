@@ -256,3 +256,20 @@ fn every_validation_key_is_shown_where_it_is_edited() {
         );
     }
 }
+
+/// Issue 16: letters typed into a number field are refused with a word under the field,
+/// and the value stays.
+#[test]
+fn letters_in_a_number_field_are_refused_with_a_message() {
+    let mut h = harness(preset("cng-genset"));
+    h.run_steps(2);
+    let before = h.state().model.inertias[9].inertia_kg_m2;
+    h.get_by_label("J generator").click();
+    h.step();
+    h.get_by_label("J generator").type_text("abc");
+    h.step();
+    h.key_press(Key::Enter);
+    h.run_steps(3);
+    assert_eq!(h.state().model.inertias[9].inertia_kg_m2, before);
+    h.get_by_label_contains("is not a number: the value stays 4");
+}

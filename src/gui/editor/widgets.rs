@@ -75,8 +75,10 @@ pub fn number(
     unit: &str,
     typical: f64,
 ) -> Response {
-    marked(ui, cx, key, |ui| {
+    let mut refused_note = None;
+    let r = marked(ui, cx, key, |ui| {
         let editing = ui.memory(|m| m.has_focus(ui.next_auto_id()));
+        let shown = *value;
         let speed = value.abs().max(typical.abs()).max(1e-9) * 0.004;
         let mut drag = DragValue::new(value)
             .speed(speed)
@@ -88,6 +90,21 @@ pub fn number(
                     format_value(x)
                 }
             });
+        // Issue 16: text that is no number used to be dropped without a word. The parser
+        // is egui's own rule (whitespace ignored, U+2212 is a minus); it remembers what it
+        // refused, and a field left with such text says so under its row.
+        let refused = std::rc::Rc::new(std::cell::RefCell::new(None::<String>));
+        let seen = refused.clone();
+        drag = drag.custom_parser(move |text| {
+            let clean: String = text
+                .chars()
+                .filter(|c| !c.is_whitespace())
+                .map(|c| if c == '−' { '-' } else { c })
+                .collect();
+            let parsed = clean.parse::<f64>().ok();
+            *seen.borrow_mut() = parsed.is_none().then(|| text.to_string());
+            parsed
+        });
         match unit {
             "" => {}
             "°" => drag = drag.suffix("°"),
@@ -95,8 +112,28 @@ pub fn number(
         }
         let r = ui.add(drag);
         name_it(ui, &r, access);
+        let note_id = r.id.with("not a number");
+        if r.gained_focus() || r.changed() {
+            ui.data_mut(|d| d.remove::<String>(note_id));
+        }
+        if r.lost_focus()
+            && let Some(text) = refused.borrow_mut().take()
+        {
+            let note = format!(
+                "“{}” is not a number: the value stays {}",
+                text.trim(),
+                format_value(shown)
+            );
+            ui.data_mut(|d| d.insert_temp(note_id, note));
+        }
+        refused_note = ui.data(|d| d.get_temp::<String>(note_id));
         r
-    })
+    });
+    // A validation message of the same row has the word first.
+    if cx.row_message.is_none() {
+        cx.row_message = refused_note;
+    }
+    r
 }
 
 /// A whole number (counts, mode numbers).
