@@ -12,7 +12,7 @@ use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 use std::path::PathBuf;
 use std::time::{Duration, Instant};
-use torsim::model::{Model, parse_model, presets, read_model_file};
+use torsim::model::{Model, presets, read_model_file};
 
 pub(super) fn dir(name: &str) -> PathBuf {
     let dir = std::env::temp_dir().join(format!("torsim-unsaved-{name}-{}", std::process::id()));
@@ -21,10 +21,7 @@ pub(super) fn dir(name: &str) -> PathBuf {
     dir
 }
 
-fn preset(name: &str) -> Model {
-    let p = presets::preset(name).expect("preset");
-    parse_model(p.text, name).expect("model")
-}
+use super::tests_support::preset_model as preset;
 
 fn harness(path: Option<PathBuf>) -> Harness<'static, TorsimApp> {
     let model = preset("cng-genset");

@@ -242,10 +242,6 @@ pub fn compute(
             return None;
         }
     };
-    if let Some(engine) = &model.engine {
-        let cycle = torsim::physics::engine_cycle::engine_cycle(engine, 1.0);
-        send(SimResult::EngineCycle(generation, Arc::new(cycle)));
-    }
     let [from, to] = model.operation.speed_range_rpm.unwrap_or([100.0, 3000.0]);
     let speeds = speed_grid(from, to, (to - from) / 200.0);
     let orders = model.orders();
@@ -273,6 +269,13 @@ pub fn compute(
             send(SimResult::Ratings(generation, Arc::new(ratings)));
         }
         Err(e) => send(SimResult::Error(generation, "response", e.to_string())),
+    }
+    // After the plots an edit is waiting for: the editor's cycle drawing can come later.
+    if let Some(engine) = &model.engine
+        && !stale()
+    {
+        let cycle = torsim::physics::engine_cycle::engine_cycle(engine, 1.0);
+        send(SimResult::EngineCycle(generation, Arc::new(cycle)));
     }
     (!stale()).then_some(system)
 }

@@ -29,6 +29,8 @@ use super::spanned::Tab;
 
 /// The catalogue's reference ambient for P_KV, °C: 30.
 pub const CATALOGUE_AMBIENT_C: f64 = 30.0;
+/// The rubber's permissible temperature when none is given, °C: 80 (natural rubber).
+pub const DEFAULT_PERMISSIBLE_TEMPERATURE_C: f64 = 80.0;
 /// DIN 740-2's temperature factor S_t for natural rubber: (°C, S_t), linear between.
 const TEMPERATURE_FACTOR: [(f64, f64); 4] = [(30.0, 1.0), (40.0, 1.2), (60.0, 1.4), (80.0, 1.8)];
 
@@ -141,7 +143,10 @@ pub(crate) fn read(t: &Tab) -> Result<Option<CouplingRating>, ModelError> {
         permissible_vibratory_torque_nm: r.opt_f64("permissible_vibratory_torque_nm")?,
         permissible_power_loss_w: r.opt_f64("permissible_power_loss_w")?,
         ambient_c: r.f64_or("ambient_c", CATALOGUE_AMBIENT_C)?,
-        permissible_temperature_c: r.f64_or("permissible_temperature_c", 80.0)?,
+        permissible_temperature_c: r.f64_or(
+            "permissible_temperature_c",
+            DEFAULT_PERMISSIBLE_TEMPERATURE_C,
+        )?,
     };
     match rating.problem() {
         Some((key, why)) => Err(ModelError::at(r.key(key), why)),
@@ -168,7 +173,7 @@ pub(crate) fn fields(
         ),
         (
             "permissible_temperature_c",
-            Some(r.permissible_temperature_c).filter(|t| *t != 80.0),
+            Some(r.permissible_temperature_c).filter(|t| *t != DEFAULT_PERMISSIBLE_TEMPERATURE_C),
         ),
     ];
     for (key, v) in optional {
