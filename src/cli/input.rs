@@ -1,25 +1,13 @@
 //! Loading the model a command names, and the speed grid it sweeps.
 
 use super::error::CliError;
-use std::path::Path;
-use torsim::model::{Model, parse_model, presets, read_model_file};
+use torsim::model::Model;
+pub use torsim::model::PRESET_PREFIX;
 
-/// Prefix naming a preset shipped in the binary instead of a file: `preset:cng-genset`.
-pub const PRESET_PREFIX: &str = "preset:";
-
-/// Reads the model `arg` names: a file path, or `preset:NAME` for a shipped preset.
+/// Reads the model `arg` names: a file path, or `preset:NAME` for a shipped preset
+/// ([`torsim::model::load_model`]).
 pub fn load_model(arg: &str) -> Result<Model, CliError> {
-    if let Some(name) = arg.strip_prefix(PRESET_PREFIX) {
-        let preset = presets::preset(name).ok_or_else(|| {
-            let names: Vec<&str> = presets::PRESETS.iter().map(|p| p.name).collect();
-            CliError::input(anyhow::anyhow!(
-                "no preset `{name}`; shipped presets: {}",
-                names.join(", ")
-            ))
-        })?;
-        return Ok(parse_model(preset.text, arg)?);
-    }
-    Ok(read_model_file(Path::new(arg))?)
+    Ok(torsim::model::load_model(arg)?.model)
 }
 
 /// What a sweep command sweeps: the model, the speeds and the engine load.

@@ -14,7 +14,6 @@ mod input;
 mod json_guard;
 // Only the window opens a model by this name; a build without it has no caller.
 #[cfg_attr(not(feature = "gui"), allow(unused_imports))]
-pub use input::load_model;
 mod modes;
 mod progress;
 pub mod ratings;
@@ -192,7 +191,10 @@ pub enum Command {
 pub fn run(cli: Cli) -> Result<(), CliError> {
     torsim::limits::set(cli.limits.limits()?);
     match cli.command {
-        None => crate::gui::run(cli.model),
+        None => crate::gui::run(cli.model).map_err(|e| match e {
+            crate::gui::OpenError::Model(e) => CliError::input(e),
+            e @ crate::gui::OpenError::Window(_) => CliError::failed(e),
+        }),
         Some(Command::Modes {
             model,
             speed_rpm,

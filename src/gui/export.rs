@@ -4,8 +4,8 @@
 //! channel and shows in the status line.
 
 use super::app::TorsimApp;
+use super::background::{self, Lost, Pending};
 use super::overwrite::PendingWrite;
-use crossbeam_channel::{Receiver, Sender, TryRecvError, bounded};
 use std::fmt::Write as _;
 use std::path::PathBuf;
 use std::sync::Arc;
@@ -135,11 +135,11 @@ type Outcome = Option<Result<PathBuf, String>>;
 pub struct Exports {
     /// A CSV dialog: the path chosen and the data (written once checked against the
     /// open files, [`super::overwrite`]).
-    csv: Option<Receiver<Option<(PathBuf, PlotData)>>>,
+    csv: Option<Pending<Option<(PathBuf, PlotData)>>>,
     /// The PNG dialog; the screenshot is taken once it has closed.
-    png_path: Option<Receiver<Option<PathBuf>>>,
+    png_path: Option<Pending<Option<PathBuf>>>,
     /// The PNG encoding and writing.
-    png: Option<Receiver<Outcome>>,
+    png: Option<Pending<Outcome>>,
 }
 
 /// A file name from a plot title: letters, digits, `-` and `_`.
@@ -157,34 +157,16 @@ fn file_name(title: &str, extension: &str) -> String {
     format!("{}.{extension}", stem.trim_matches('_'))
 }
 
-/// Runs `work` (a dialog, writing) on a named thread; `ctx` repaints when it is done.
+/// Runs `work` (a dialog, writing) on a named thread ([`background::spawn`]); a thread
+/// that cannot start answers [`Lost`], which [`poll`] reports.
 fn on_thread<T: Send + 'static>(
     name: &str,
     ctx: &egui::Context,
     work: impl FnOnce() -> T + Send + 'static,
-) -> Receiver<T> {
-    let (tx, rx): (Sender<T>, Receiver<T>) = bounded(1);
-    let ctx = ctx.clone();
-    // If the thread cannot start, the sender is dropped and [`poll`] reports the closed
-    // channel.
-    let _ = std::thread::Builder::new()
-        .name(name.into())
-        .spawn(move || {
-            let _ = tx.send(work());
-            ctx.request_repaint();
-        });
-    rx
-}
-
-/// The answer of a finished thread (`Err` if it ended without one); `None` while it runs.
-fn take<T>(slot: &mut Option<Receiver<T>>) -> Option<Result<T, ()>> {
-    let answer = match slot.as_ref()?.try_recv() {
-        Ok(v) => Ok(v),
-        Err(TryRecvError::Empty) => return None,
-        Err(TryRecvError::Disconnected) => Err(()),
-    };
-    *slot = None;
-    Some(answer)
+) -> Pending<T> {
+    let (work_later, pending) = background::deferred();
+    work_later.spawn(name, ctx, work);
+    pending
 }
 
 /// Asks where to save `data` as CSV, off the GUI thread; [`poll`] writes it there.
@@ -212,20 +194,17 @@ pub fn export_png(exports: &mut Exports, ctx: &egui::Context) {
 /// Takes a screenshot of the next frame and writes it to `path` as PNG (encoding and
 /// writing on a thread).
 pub fn screenshot_to(exports: &mut Exports, ctx: &egui::Context, path: PathBuf) {
-    let (tx, rx) = bounded(1);
-    exports.png = Some(rx);
+    let (write_later, pending) = background::deferred();
+    exports.png = Some(pending);
     let repaint = ctx.clone();
     ctx.request_screenshot(move |image: Arc<egui::ColorImage>| {
-        let _ = std::thread::Builder::new()
-            .name("torsim-export-png".into())
-            .spawn(move || {
-                let written = png_bytes(&image).and_then(|bytes| {
-                    torsim::files::write_atomic(&path, bytes)
-                        .map_err(|e| format!("could not write {}: {e}", path.display()))
-                });
-                let _ = tx.send(Some(written.map(|()| path)));
-                repaint.request_repaint();
+        write_later.spawn("torsim-export-png", &repaint, move || {
+            let written = png_bytes(&image).and_then(|bytes| {
+                torsim::files::write_atomic(&path, bytes)
+                    .map_err(|e| format!("could not write {}: {e}", path.display()))
             });
+            Some(written.map(|()| path))
+        });
     });
 }
 
@@ -238,21 +217,21 @@ pub fn poll(app: &mut TorsimApp, ctx: &egui::Context) {
         None => {}
     };
     // Issue 13: a chosen path that is an open file is written only once the user agrees.
-    match take(&mut app.exports.csv) {
+    match background::take(&mut app.exports.csv) {
         Some(Ok(Some((path, data)))) => {
             super::overwrite::request(app, ctx, PendingWrite::PlotCsv(path, data))
         }
-        Some(Err(())) => report(failed(), "", &mut app.status),
+        Some(Err(Lost)) => report(failed(), "", &mut app.status),
         _ => {}
     }
-    match take(&mut app.exports.png_path) {
+    match background::take(&mut app.exports.png_path) {
         Some(Ok(Some(path))) => super::overwrite::request(app, ctx, PendingWrite::Png(path)),
-        Some(Err(())) => report(failed(), "", &mut app.status),
+        Some(Err(Lost)) => report(failed(), "", &mut app.status),
         _ => {}
     }
-    if let Some(answer) = take(&mut app.exports.png) {
+    if let Some(answer) = background::take(&mut app.exports.png) {
         report(
-            answer.unwrap_or_else(|()| failed()),
+            answer.unwrap_or_else(|Lost| failed()),
             "the window",
             &mut app.status,
         );

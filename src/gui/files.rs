@@ -4,36 +4,27 @@
 //! the model asks first when it has unsaved edits ([`super::unsaved`]).
 
 use super::app::TorsimApp;
-use crossbeam_channel::{Receiver, bounded};
+use super::background::{self, Pending};
 use std::path::PathBuf;
 use torsim::model::{parse_model, presets::PRESETS, read_model_file, save_model_file};
 
 /// Dialogs waiting for the user.
 #[derive(Default)]
 pub struct FileDialogs {
-    open: Option<Receiver<Option<PathBuf>>>,
-    save: Option<Receiver<Option<PathBuf>>>,
+    open: Option<Pending<Option<PathBuf>>>,
+    save: Option<Pending<Option<PathBuf>>>,
 }
 
-/// Runs a blocking dialog on a thread; its answer comes back on the receiver.
+/// Runs a blocking model-file dialog on a thread (a thread that cannot start answers as a
+/// cancelled dialog).
 fn dialog(
     pick: impl FnOnce(rfd::FileDialog) -> Option<PathBuf> + Send + 'static,
-    ctx: egui::Context,
-) -> Receiver<Option<PathBuf>> {
-    let (tx, rx) = bounded(1);
-    let spawned = std::thread::Builder::new()
-        .name("torsim-file-dialog".into())
-        .spawn(move || {
-            let dialog = rfd::FileDialog::new().add_filter("torsim model", &["toml"]);
-            let _ = tx.send(pick(dialog));
-            ctx.request_repaint();
-        });
-    if spawned.is_err() {
-        let (tx, rx) = bounded(1);
-        let _ = tx.send(None);
-        return rx;
-    }
-    rx
+    ctx: &egui::Context,
+) -> Pending<Option<PathBuf>> {
+    background::spawn("torsim-file-dialog", ctx, move || {
+        pick(rfd::FileDialog::new().add_filter("torsim model", &["toml"]))
+    })
+    .unwrap_or_else(|_| Pending::ready(None))
 }
 
 /// Saves the model to `path`, reporting in the status line.
@@ -57,10 +48,7 @@ pub fn save_as(app: &mut TorsimApp, ctx: &egui::Context) {
         .as_ref()
         .and_then(|p| p.file_name())
         .map_or("model.toml".into(), |n| n.to_string_lossy().into_owned());
-    app.files.save = Some(dialog(
-        move |d| d.set_file_name(name).save_file(),
-        ctx.clone(),
-    ));
+    app.files.save = Some(dialog(move |d| d.set_file_name(name).save_file(), ctx));
 }
 
 /// True while the Save as… dialog is open.
@@ -124,22 +112,12 @@ fn open_path(app: &mut TorsimApp, path: PathBuf) {
 
 /// Takes the answers of finished dialogs.
 pub fn poll(app: &mut TorsimApp, ctx: &egui::Context) {
-    if let Some(rx) = &app.files.open
-        && let Ok(answer) = rx.try_recv()
-    {
-        app.files.open = None;
-        if let Some(path) = answer {
-            open_path(app, path);
-        }
+    if let Some(Ok(Some(path))) = background::take(&mut app.files.open) {
+        open_path(app, path);
     }
-    if let Some(rx) = &app.files.save
-        && let Ok(answer) = rx.try_recv()
-    {
-        app.files.save = None;
-        if let Some(path) = answer {
-            // Issue 13: over an open recording only once the user agrees.
-            super::overwrite::request(app, ctx, super::overwrite::PendingWrite::Model(path));
-        }
+    if let Some(Ok(Some(path))) = background::take(&mut app.files.save) {
+        // Issue 13: over an open recording only once the user agrees.
+        super::overwrite::request(app, ctx, super::overwrite::PendingWrite::Model(path));
     }
 }
 
@@ -155,7 +133,7 @@ pub fn menu_ui(app: &mut TorsimApp, ui: &mut egui::Ui) {
                 new_model(app);
             }
             if ui.button("Open…").clicked() {
-                app.files.open = Some(dialog(|d| d.pick_file(), ui.ctx().clone()));
+                app.files.open = Some(dialog(|d| d.pick_file(), ui.ctx()));
             }
             ui.menu_button("Open recent", |ui| {
                 if app.recent.is_empty() {

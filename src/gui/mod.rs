@@ -4,6 +4,7 @@
 //! [`export`].
 
 pub mod app;
+pub mod background;
 pub mod decimate;
 pub mod diagnosis;
 pub mod editor;
@@ -63,8 +64,18 @@ mod tests_traces;
 #[cfg(test)]
 mod tests_unsaved;
 
-use crate::cli::error::CliError;
-use std::path::PathBuf;
+use torsim::model::{ModelError, PRESET_PREFIX};
+
+/// Why the window did not open: its model could not be read, or the window itself failed.
+#[derive(Debug, thiserror::Error)]
+pub enum OpenError {
+    /// The model named on the command line (file, line and key in the error).
+    #[error(transparent)]
+    Model(#[from] ModelError),
+    /// The window system refused the window.
+    #[error("cannot open the window: {0}")]
+    Window(String),
+}
 
 /// The smallest window, points: below it the panels would overlap (issue 16).
 pub const MIN_WINDOW_SIZE: [f32; 2] = [800.0, 500.0];
@@ -72,12 +83,11 @@ pub const MIN_WINDOW_SIZE: [f32; 2] = [800.0, 500.0];
 /// Opens the window on `model_arg` (a file or `preset:NAME`); without one, on an ended
 /// window's unsaved edits, the last session's model, else the default preset
 /// ([`startup`]).
-pub fn run(model_arg: Option<String>) -> Result<(), CliError> {
+pub fn run(model_arg: Option<String>) -> Result<(), OpenError> {
     let explicit = model_arg.is_some();
-    let arg =
-        model_arg.unwrap_or_else(|| format!("preset:{}", torsim::model::presets::DEFAULT_PRESET));
-    let model = crate::cli::load_model(&arg)?;
-    let path = (!arg.starts_with("preset:")).then(|| PathBuf::from(&arg));
+    let arg = model_arg
+        .unwrap_or_else(|| format!("{PRESET_PREFIX}{}", torsim::model::presets::DEFAULT_PRESET));
+    let torsim::model::Sourced { model, path } = torsim::model::load_model(&arg)?;
     let options = eframe::NativeOptions {
         viewport: egui::ViewportBuilder::default()
             .with_inner_size([1280.0, 800.0])
@@ -99,5 +109,5 @@ pub fn run(model_arg: Option<String>) -> Result<(), CliError> {
             Ok(Box::new(app))
         }),
     )
-    .map_err(|e| CliError::failed(anyhow::anyhow!("cannot open the window: {e}")))
+    .map_err(|e| OpenError::Window(e.to_string()))
 }

@@ -4,40 +4,28 @@
 //! regime; the traces tab overlays the two. Its stations are marked in the schematic.
 
 use super::app::{Tab, TorsimApp};
+use super::background;
 use super::trace_state::{TraceMode, TraceView};
-use crossbeam_channel::bounded;
 use std::path::PathBuf;
 
 /// Opens the file dialog on its own thread; the answer is taken by [`poll`].
 pub fn open_dialog(app: &mut TorsimApp, ctx: &egui::Context) {
-    let (tx, rx) = bounded(1);
-    let ctx = ctx.clone();
-    let spawned = std::thread::Builder::new()
-        .name("torsim-recording-dialog".into())
-        .spawn(move || {
-            let path = rfd::FileDialog::new()
-                .set_title("Open recording")
-                .add_filter("recording (CSV with a .toml sidecar)", &["csv"])
-                .pick_file();
-            let _ = tx.send(path);
-            ctx.request_repaint();
-        });
+    let spawned = background::spawn("torsim-recording-dialog", ctx, || {
+        rfd::FileDialog::new()
+            .set_title("Open recording")
+            .add_filter("recording (CSV with a .toml sidecar)", &["csv"])
+            .pick_file()
+    });
     match spawned {
-        Ok(_) => app.traces.dialog = Some(rx),
+        Ok(pending) => app.traces.dialog = Some(pending),
         Err(e) => app.status = format!("cannot open the file dialog: {e}"),
     }
 }
 
 /// Takes the dialog's answer, if there is one.
 pub fn poll(app: &mut TorsimApp) {
-    let Some(rx) = &app.traces.dialog else {
-        return;
-    };
-    if let Ok(answer) = rx.try_recv() {
-        app.traces.dialog = None;
-        if let Some(path) = answer {
-            open_recording(app, path);
-        }
+    if let Some(Ok(Some(path))) = background::take(&mut app.traces.dialog) {
+        open_recording(app, path);
     }
 }
 

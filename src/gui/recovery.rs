@@ -12,7 +12,7 @@
 //! a first comment line naming the file the model came from.
 
 use super::app::TorsimApp;
-use crossbeam_channel::{Receiver, bounded};
+use super::background::{self, Pending};
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 use torsim::model::{Model, parse_model};
@@ -53,7 +53,7 @@ pub struct Recovery {
     /// When the first change not yet written was seen.
     pending_since: Option<Instant>,
     /// A write in progress: the revision it writes and its outcome.
-    writing: Option<(u64, Receiver<Result<(), String>>)>,
+    writing: Option<(u64, Pending<Result<(), String>>)>,
     /// Recovery files of ended windows, the newest first, not yet taken up.
     pub orphans: Vec<Orphan>,
     /// An orphan restored into this window: removed once this window's own file holds it.
@@ -129,11 +129,12 @@ fn file_text(model: &Model, path: Option<&Path>) -> String {
 /// one repaint then, so an idle window stays idle), takes the outcome of a write, and
 /// removes the file once the model is clean.
 pub fn tick(app: &mut TorsimApp, ctx: &egui::Context) {
-    if let Some((revision, rx)) = &app.recovery.writing
-        && let Ok(outcome) = rx.try_recv()
+    if let Some((revision, pending)) = &app.recovery.writing
+        && let Some(outcome) = pending.poll()
     {
         let revision = *revision;
         app.recovery.writing = None;
+        let outcome = outcome.unwrap_or_else(|_| Err("the autosave thread ended".into()));
         match outcome {
             Ok(()) => {
                 app.recovery.written = Some(revision);
@@ -167,21 +168,14 @@ pub fn tick(app: &mut TorsimApp, ctx: &egui::Context) {
     }
     app.recovery.pending_since = None;
     let text = file_text(&app.model, app.path.as_deref());
-    let (tx, rx) = bounded(1);
-    let wake = ctx.clone();
-    let spawned = std::thread::Builder::new()
-        .name("torsim-autosave".into())
-        .spawn(move || {
-            let outcome = file
-                .parent()
-                .map_or(Ok(()), std::fs::create_dir_all)
-                .and_then(|()| torsim::files::write_atomic(&file, text))
-                .map_err(|e| format!("{}: {e}", file.display()));
-            let _ = tx.send(outcome);
-            wake.request_repaint();
-        });
+    let spawned = background::spawn("torsim-autosave", ctx, move || {
+        file.parent()
+            .map_or(Ok(()), std::fs::create_dir_all)
+            .and_then(|()| torsim::files::write_atomic(&file, text))
+            .map_err(|e| format!("{}: {e}", file.display()))
+    });
     match spawned {
-        Ok(_) => app.recovery.writing = Some((app.revision, rx)),
+        Ok(pending) => app.recovery.writing = Some((app.revision, pending)),
         Err(e) => app.status = format!("could not autosave the unsaved edits: {e}"),
     }
 }

@@ -4,9 +4,9 @@
 //! taken from the worker's messages.
 
 use super::app::TorsimApp;
+use super::background::Pending;
 use super::trace_data::{LiveTrace, TraceSpec};
 use super::worker::SimResult;
-use crossbeam_channel::Receiver;
 use std::path::PathBuf;
 use torsim::model::Model;
 use torsim::recording::Run;
@@ -53,7 +53,7 @@ pub struct TraceState {
     /// The open recording (CSV path).
     pub recording: Option<PathBuf>,
     /// A file dialog waiting for the user.
-    pub dialog: Option<Receiver<Option<PathBuf>>>,
+    pub dialog: Option<Pending<Option<PathBuf>>>,
     /// What the tab shows.
     pub view: TraceView,
     /// Station (node, or relative speed) of the spectrogram.

@@ -6,7 +6,8 @@
 //! its next step. The verdict's model ([`Finished`]) is built on the thread too.
 
 use super::finished::Finished;
-use crossbeam_channel::{Receiver, unbounded};
+use crate::gui::background;
+use crossbeam_channel::Receiver;
 use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
 use torsim::diagnose::{DiagnoseError, DiagnoseOptions, LabelledRecording, diagnose};
@@ -43,23 +44,18 @@ impl Job {
         options: DiagnoseOptions,
         ctx: &egui::Context,
     ) -> Result<Self, String> {
-        let (tx, messages) = unbounded();
         let cancel = Arc::new(AtomicBool::new(false));
-        let (flag, ctx) = (cancel.clone(), ctx.clone());
-        std::thread::Builder::new()
-            .name("torsim-diagnose".into())
-            .spawn(move || {
-                let mut progress = |fraction: f64, stage: &str| {
-                    let _ = tx.send(JobMessage::Progress(id, fraction, stage.to_string()));
-                    ctx.request_repaint();
-                    !flag.load(Ordering::SeqCst)
-                };
-                let result = diagnose(&model, &recordings, &options, &mut progress)
-                    .map(|report| Box::new(Finished::new(model, report)));
-                let _ = tx.send(JobMessage::Done(id, result));
-                ctx.request_repaint();
-            })
-            .map_err(|e| format!("cannot start the diagnosis: {e}"))?;
+        let flag = cancel.clone();
+        let messages = background::spawn_stream("torsim-diagnose", ctx, move |sink| {
+            let mut progress = |fraction: f64, stage: &str| {
+                sink.send(JobMessage::Progress(id, fraction, stage.to_string()));
+                !flag.load(Ordering::SeqCst)
+            };
+            let result = diagnose(&model, &recordings, &options, &mut progress)
+                .map(|report| Box::new(Finished::new(model, report)));
+            sink.send(JobMessage::Done(id, result));
+        })
+        .map_err(|e| format!("cannot start the diagnosis: {e}"))?;
         Ok(Self {
             id,
             fraction: 0.0,

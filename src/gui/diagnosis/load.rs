@@ -3,7 +3,7 @@
 //! sidecar beside each, stations checked against the model's nodes), so the window
 //! never freezes; the files and the errors (with file and line) come back over a channel.
 
-use crossbeam_channel::{Receiver, bounded};
+use crate::gui::background::{self, Pending};
 use std::path::{Path, PathBuf};
 use torsim::diagnose::LabelledRecording;
 use torsim::diagnose::labels::label_of;
@@ -108,23 +108,16 @@ pub fn start(
     nodes: Vec<String>,
     have: Vec<PathBuf>,
     ctx: &egui::Context,
-) -> Result<Receiver<Loaded>, String> {
-    let (tx, rx) = bounded(1);
-    let ctx = ctx.clone();
-    std::thread::Builder::new()
-        .name("torsim-diagnosis-load".into())
-        .spawn(move || {
-            let paths = match source {
-                Source::Paths(p) => p,
-                Source::Dialog => rfd::FileDialog::new()
-                    .set_title("Add recordings to diagnose")
-                    .add_filter("recording (CSV with a .toml sidecar)", &["csv"])
-                    .pick_files()
-                    .unwrap_or_default(),
-            };
-            let _ = tx.send(read_all(&paths, &nodes, &have));
-            ctx.request_repaint();
-        })
-        .map(|_| rx)
-        .map_err(|e| format!("cannot start reading the recordings: {e}"))
+) -> Result<Pending<Loaded>, String> {
+    background::spawn("torsim-diagnosis-load", ctx, move || {
+        let paths = match source {
+            Source::Paths(p) => p,
+            Source::Dialog => rfd::FileDialog::new()
+                .set_title("Add recordings to diagnose")
+                .add_filter("recording (CSV with a .toml sidecar)", &["csv"])
+                .pick_files()
+                .unwrap_or_default(),
+        };
+        read_all(&paths, &nodes, &have)
+    })
 }

@@ -3,7 +3,7 @@
 //! person (`torsim::diagnose::report_html`) and writes it atomically — a temporary file in
 //! the same folder, renamed over the target once complete.
 
-use crossbeam_channel::{Receiver, TryRecvError, bounded};
+use crate::gui::background::{self, Pending};
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 use torsim::diagnose::{Report, report_html};
@@ -13,7 +13,7 @@ pub type Outcome = Option<Result<PathBuf, String>>;
 
 /// A save in progress: the dialog's answer, and what to write.
 pub struct Saving {
-    answer: Receiver<Outcome>,
+    answer: Pending<Outcome>,
     /// The report to write.
     pub report: Arc<Report>,
     /// The model it diagnosed.
@@ -23,31 +23,17 @@ pub struct Saving {
 impl Saving {
     /// Asks where to save `report` (of the model named `model_name`).
     pub fn start(report: Arc<Report>, model_name: String, ctx: &egui::Context) -> Self {
-        let (tx, rx) = bounded(1);
-        let ctx = ctx.clone();
-        let spawned = std::thread::Builder::new()
-            .name("torsim-diagnosis-save".into())
-            .spawn(move || {
-                let outcome = rfd::FileDialog::new()
-                    .set_title("Save the diagnosis report")
-                    .add_filter("HTML page", &["html"])
-                    .set_file_name("diagnosis.html")
-                    .save_file()
-                    .map(Ok);
-                let _ = tx.send(outcome);
-                ctx.request_repaint();
-            });
-        if let Err(e) = spawned {
-            let (tx, failed) = bounded(1);
-            let _ = tx.send(Some(Err(format!("cannot open the file dialog: {e}"))));
-            return Self {
-                answer: failed,
-                report,
-                model_name,
-            };
-        }
+        let answer = background::spawn("torsim-diagnosis-save", ctx, || {
+            rfd::FileDialog::new()
+                .set_title("Save the diagnosis report")
+                .add_filter("HTML page", &["html"])
+                .set_file_name("diagnosis.html")
+                .save_file()
+                .map(Ok)
+        })
+        .unwrap_or_else(|e| Pending::ready(Some(Err(format!("cannot open the file dialog: {e}")))));
         Self {
-            answer: rx,
+            answer,
             report,
             model_name,
         }
@@ -55,13 +41,11 @@ impl Saving {
 
     /// The outcome once the thread is done (`Some(None)`: cancelled).
     pub fn poll(&mut self) -> Option<Outcome> {
-        match self.answer.try_recv() {
-            Ok(outcome) => Some(outcome),
-            Err(TryRecvError::Empty) => None,
-            Err(TryRecvError::Disconnected) => {
-                Some(Some(Err("the save thread ended without an answer".into())))
-            }
-        }
+        Some(
+            self.answer
+                .poll()?
+                .unwrap_or_else(|_| Some(Err("the save thread ended without an answer".into()))),
+        )
     }
 }
 

@@ -5,7 +5,7 @@ use super::finished::Finished;
 use super::job::Job;
 use super::load::{self, Loaded, LoadedRecording, Source};
 use super::save::Saving;
-use crossbeam_channel::{Receiver, TryRecvError};
+use crate::gui::background::{self, Lost, Pending};
 use torsim::diagnose::{DiagnoseError, DiagnoseOptions, LabelledRecording};
 use torsim::model::Model;
 
@@ -17,7 +17,7 @@ pub struct DiagnosisState {
     /// Files that could not be added, with file and line.
     pub load_errors: Vec<String>,
     /// A loading thread (dialog and reading).
-    loading: Option<Receiver<Loaded>>,
+    loading: Option<Pending<Loaded>>,
     /// Settings of the diagnosis (threads: the machine's cores, at most 8).
     pub options: DiagnoseOptions,
     /// The run in progress.
@@ -130,20 +130,14 @@ impl DiagnosisState {
 
     /// Takes what the threads sent.
     pub fn poll(&mut self) {
-        if let Some(rx) = &self.loading {
-            match rx.try_recv() {
-                Ok((added, errors)) => {
-                    self.loading = None;
-                    self.load_errors = errors;
-                    self.recordings.extend(added);
-                    self.relabel();
-                }
-                Err(TryRecvError::Empty) => {}
-                Err(TryRecvError::Disconnected) => {
-                    self.loading = None;
-                    self.load_errors = vec!["reading the recordings failed".into()];
-                }
+        match background::take(&mut self.loading) {
+            Some(Ok((added, errors))) => {
+                self.load_errors = errors;
+                self.recordings.extend(added);
+                self.relabel();
             }
+            Some(Err(Lost)) => self.load_errors = vec!["reading the recordings failed".into()],
+            None => {}
         }
         if let Some(result) = self.job.as_mut().and_then(Job::poll) {
             self.job = None;
