@@ -1,8 +1,10 @@
 //! Design variants side by side (seed 001 §3.6, Tables 9–13): for each steady regime, the
 //! irregularity ratio of every station and the power loss of every rubber stage, from a
-//! nonlinear steady run and its order analysis.
+//! nonlinear steady run and its order analysis; and every rated stage's coupling ratings
+//! at each regime ([`crate::ratings::check_simulated`]).
 
 use crate::model::{ConnectionKind, Model};
+use crate::ratings::{StageRating, check_simulated, merge_points};
 use crate::recording::Run;
 use crate::signal::{AnalysisOptions, SignalError, analyse_with};
 use crate::transient::{RunOptions, TransientError, simulate, to_recording};
@@ -48,6 +50,8 @@ pub struct VariantResult {
     pub stages: Vec<String>,
     /// `power_loss_w[stage][regime]`: mean power dissipated in the stage, W.
     pub power_loss_w: Vec<Vec<f64>>,
+    /// The rated stages' checks, one point per regime (empty without ratings).
+    pub ratings: Vec<StageRating>,
 }
 
 /// Why a comparison could not be made.
@@ -96,8 +100,10 @@ pub fn compare_regimes(
             .map(|&j| model.connections[j].name.clone())
             .collect(),
         power_loss_w: vec![Vec::new(); stage_connections.len()],
+        ratings: Vec::new(),
         nodes,
     };
+    let mut rated = Vec::new();
     let count = regimes.len().max(1) as f64;
     for (i, regime) in regimes.iter().enumerate() {
         let kind = Run::steady(regime.speed_rpm, duration_s);
@@ -131,6 +137,15 @@ pub fn compare_regimes(
                 .map_or(0.0, |(_, w)| *w);
             result.power_loss_w[s].push(w);
         }
+        rated.push(
+            check_simulated(model, &sim, regime.speed_rpm).map_err(|source| {
+                CompareError::Analysis {
+                    label: regime.label.clone(),
+                    source,
+                }
+            })?,
+        );
     }
+    result.ratings = merge_points(rated);
     Ok(result)
 }

@@ -115,3 +115,94 @@ fn compare_json_shape() {
     let out = torsim(&["compare", "tests/data/spec-examples/three-dof.toml"]);
     assert_eq!(out.status.code(), Some(2), "no regimes and no --speeds-rpm");
 }
+
+/// The coupling ratings in `response`, `simulate` (steady and run-up) and `compare`
+/// (issue 16): the
+/// genset's rated coupling is judged at every limit on a steady run, at T_Kmax on a
+/// run-up, and at each regime of a comparison; the JSON carries the same table as
+/// `response`'s.
+#[test]
+fn simulate_and_compare_check_the_ratings() {
+    let steady = json(&[
+        "simulate",
+        "preset:cng-genset",
+        "--speed-rpm",
+        "1500",
+        "--duration-s",
+        "0.5",
+        "--json",
+    ]);
+    let stage = &steady["ratings"][0];
+    assert_eq!(stage["connection"], "coupling");
+    let limits: Vec<&str> = stage["worst"]
+        .as_array()
+        .expect("worst checks")
+        .iter()
+        .map(|c| c["limit"].as_str().expect("limit name"))
+        .collect();
+    assert_eq!(limits, ["T_KN", "T_Kmax", "T_KW", "P_KV"]);
+    for c in stage["worst"].as_array().expect("worst checks") {
+        let u = c["utilisation"].as_f64().expect("utilisation");
+        assert!(u > 0.05 && u < 1.0, "{c}: the preset is rated for 1500 rpm");
+        assert_eq!(c["speed_rpm"].as_f64(), Some(1500.0));
+    }
+
+    let run_up = json(&[
+        "simulate",
+        "preset:cng-genset",
+        "--run-up",
+        "1000:2000",
+        "--duration-s",
+        "2",
+        "--json",
+    ]);
+    let worst = &run_up["ratings"][0]["worst"];
+    assert_eq!(worst.as_array().map(Vec::len), Some(1), "{worst}");
+    assert_eq!(worst[0]["limit"], "T_Kmax");
+    let at = worst[0]["speed_rpm"].as_f64().expect("speed");
+    assert!((1000.0..=2000.0).contains(&at), "peak at {at} rpm");
+
+    // `response --json` on a rated preset (it printed nothing while `order` was null).
+    let response = json(&[
+        "response",
+        "preset:cng-genset",
+        "--from-rpm",
+        "1000",
+        "--to-rpm",
+        "2000",
+        "--json",
+    ]);
+    let worst = response["ratings"][0]["worst"].as_array().expect("worst");
+    assert_eq!(worst.len(), 4);
+    assert!(worst[2]["order"].as_f64().is_some(), "T_KW names its order");
+    assert!(worst[0].get("order").is_none(), "T_KN has no order");
+
+    let compared = json(&[
+        "compare",
+        "preset:cng-genset",
+        "--speeds-rpm",
+        "1200,1800",
+        "--duration-s",
+        "0.5",
+        "--json",
+    ]);
+    let by_speed = &compared["variants"][0]["ratings"][0]["utilisation_by_speed"];
+    assert_eq!(
+        by_speed["T_KW"].as_array().map(Vec::len),
+        Some(2),
+        "{by_speed}"
+    );
+    let text = String::from_utf8(
+        torsim(&[
+            "compare",
+            "preset:cng-genset",
+            "--speeds-rpm",
+            "1500",
+            "--duration-s",
+            "0.5",
+        ])
+        .stdout,
+    )
+    .expect("UTF-8");
+    assert!(text.contains("Coupling ratings (DIN 740-2"), "{text}");
+}

@@ -3,7 +3,8 @@
 //! preset's documented 250 kW at 1800 rpm, the vibratory check recomputed here from the
 //! response's order amplitudes with DIN 740-2's factors written out, the decisive order
 //! at the 520 rpm resonance against the Campbell crossing, the derated P_KV, the
-//! `[expect] within_ratings` check, and refused rating values named by their key.
+//! `[expect] within_ratings` check, refused rating values named by their key, and the
+//! same checks read off a steady time-domain run.
 
 use std::f64::consts::PI;
 use torsim::modal::{critical_speed_rpm, modes, speed_grid};
@@ -196,4 +197,54 @@ fn bad_ratings_are_refused_at_their_key() {
         .and_then(|m| torsim::model::validate(&m).map(|()| m))
         .expect_err("a shaft has no rating");
     assert!(e.to_string().contains("expect.within_ratings[0]"), "{e}");
+}
+
+/// Both views judge a stage alike (issue 16, "checks everywhere a torque or loss is
+/// computed"; "every view tells the same physics"): the ratings read off a steady
+/// time-domain run ([`torsim::ratings::check_simulated`], what `simulate` and `compare`
+/// print) against those of the forced response at the same speeds, on the genset's
+/// coupling, away from resonance.
+#[test]
+fn the_time_domain_and_the_response_judge_alike() {
+    use torsim::recording::Run;
+    use torsim::transient::{RunOptions, simulate};
+    let model = genset();
+    for speed_rpm in [1200.0, 1500.0, 1900.0] {
+        let (system, r) = sweep(&model, speed_rpm, speed_rpm);
+        let linear = check_ratings(&model, &system, &r);
+        let sim = simulate(
+            &model,
+            Run::steady(speed_rpm, 1.0),
+            RunOptions::default(),
+            &mut |_| true,
+        )
+        .expect("steady run");
+        let timed = torsim::ratings::check_simulated(&model, &sim, speed_rpm).expect("checks");
+        assert_eq!(timed.len(), 1);
+        assert_eq!(linear[0].by_speed[0].len(), 4, "every limit is rated");
+        assert_eq!(timed[0].by_speed[0].len(), 4);
+        for (a, b) in linear[0].by_speed[0].iter().zip(&timed[0].by_speed[0]) {
+            assert_eq!(a.kind, b.kind);
+            assert_eq!(a.order, b.order, "{speed_rpm} rpm {:?}", a.kind);
+            // Measured (2026-11-26): mean torque within 0.15 %, T_Kmax 0.6 %, T_KW 1.1 %,
+            // P_KV 1.7 %. The run's rubber is the causal Maxwell chain fitted to the
+            // stage's law (a few % off it in loss, issue 15), which the loss and the
+            // vibratory torque feel most; the tolerances are twice those gaps.
+            let tolerance = match a.kind {
+                CheckKind::MeanTorque => 0.003,
+                CheckKind::MaxTorque => 0.012,
+                CheckKind::VibratoryTorque => 0.022,
+                CheckKind::PowerLoss => 0.035,
+            };
+            let gap = b.load / a.load - 1.0;
+            assert!(
+                gap.abs() < tolerance,
+                "{speed_rpm} rpm {:?}: response {:.2}, run {:.2} ({:+.2} %)",
+                a.kind,
+                a.load,
+                b.load,
+                100.0 * gap
+            );
+        }
+    }
 }

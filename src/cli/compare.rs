@@ -73,7 +73,10 @@ pub fn run(a: &CompareArgs) -> Result<(), CliError> {
         for (s, stage) in r.stages.iter().enumerate() {
             loss.insert(stage.clone(), numbers(&r.power_loss_w[s], "power loss")?);
         }
+        let ratings = super::ratings::Ratings::of_runs(r.ratings.clone(), &model);
+        let (rated, _) = super::ratings::json(&ratings)?;
         variants.push(json!({
+            "ratings": rated,
             "file": file,
             "name": model.name,
             "regimes": labels,
@@ -101,6 +104,7 @@ pub fn run(a: &CompareArgs) -> Result<(), CliError> {
         }
         outln!(text, "{file} — {}", model.name);
         text += &table(&header, &rows);
+        text += &super::ratings::text(&ratings);
         outln!(text);
     }
     if a.json {

@@ -1,7 +1,8 @@
-//! The coupling ratings and the linear range in `torsim response` (issue 16): a table of
-//! each rated stage's worst utilisation per limit, over the whole sweep and over the
-//! operating range, with a warning line for every limit exceeded and for every node
-//! whose IAS leaves the linear model's range; and the same as JSON.
+//! The coupling ratings in `torsim response`, `simulate` and `compare` (issue 16): a table
+//! of each rated stage's worst utilisation per limit, over every speed computed (the
+//! sweep, the run, the regimes) and over the operating range, with a warning line for
+//! every limit exceeded; in `response` also a note for every node whose IAS leaves the
+//! linear model's range. And the same as JSON.
 
 use super::error::CliError;
 use super::format::{numbers, table};
@@ -13,7 +14,7 @@ use torsim::ratings::{
 };
 use torsim::response::Response;
 
-/// The checks of `response` (of `system`, built from `model`).
+/// The rating checks of one command's results.
 pub struct Ratings {
     /// Each rated stage.
     pub stages: Vec<StageRating>,
@@ -24,7 +25,17 @@ pub struct Ratings {
 }
 
 impl Ratings {
-    /// Checks every rated stage and the linear range.
+    /// Time-domain checks (`simulate`, `compare`): the run itself is the check of the
+    /// linear range, so there is no linear-range note.
+    pub fn of_runs(stages: Vec<StageRating>, model: &Model) -> Self {
+        Self {
+            stages,
+            beyond: Vec::new(),
+            operating_rpm: model.operation.operating_range_rpm,
+        }
+    }
+
+    /// Checks every rated stage of the forced response and its linear range.
     pub fn new(model: &Model, system: &System, response: &Response) -> Self {
         Self {
             stages: check_ratings(model, system, response),
@@ -58,8 +69,8 @@ pub fn text(r: &Ratings) -> String {
             "stage",
             "limit",
             "value",
-            "sweep: load at",
-            "sweep",
+            "worst: load at",
+            "worst",
             "operating range",
         ]
         .iter()
@@ -121,15 +132,20 @@ pub fn text(r: &Ratings) -> String {
     out
 }
 
+/// One check; `order` only where there is one (T_KW): the JSON guard refuses null as a
+/// number that could not be computed.
 fn check_json(c: &Check) -> Value {
-    json!({
+    let mut v = json!({
         "limit": c.kind.limit_name(),
         "speed_rpm": c.speed_rpm,
-        "order": c.order,
         "load": c.load,
         "limit_value": c.limit,
         "utilisation": c.utilisation,
-    })
+    });
+    if let (Some(order), Value::Object(map)) = (c.order, &mut v) {
+        map.insert("order".into(), json!(order));
+    }
+    v
 }
 
 /// The JSON part: `ratings` (per stage: its limits, S_t, the worst check per limit over

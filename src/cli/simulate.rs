@@ -11,6 +11,7 @@ use super::progress::Progress;
 use serde_json::{Map, Value, json};
 use std::path::Path;
 use torsim::files::{OutputGuard, PreparedPair};
+use torsim::ratings::{check_run_up_peaks, check_simulated};
 use torsim::recording::Run;
 use torsim::recording::prepare_recording;
 use torsim::signal::{AnalysisOptions, analyse_with};
@@ -176,6 +177,12 @@ pub fn run(a: &SimulateArgs) -> Result<(), CliError> {
             .collect(),
     );
     let analysis = analyse_with(&recording, &analysis_options).map_err(CliError::failed)?;
+    let rated = if kind.is_ramp() {
+        check_run_up_peaks(&model, &sim)
+    } else {
+        check_simulated(&model, &sim, kind.speeds_rpm()[0]).map_err(CliError::failed)?
+    };
+    let ratings = super::ratings::Ratings::of_runs(rated, &model);
     // The files are renamed once everything that can fail has succeeded; dropping
     // `pending` on an early return removes its temporaries.
     let commit = |pending: Option<PreparedPair>| match pending {
@@ -203,6 +210,7 @@ pub fn run(a: &SimulateArgs) -> Result<(), CliError> {
                 "steps".into(),
                 json!({"accepted": sim.steps.0, "rejected": sim.steps.1}),
             );
+            map.insert("ratings".into(), super::ratings::json(&ratings)?.0);
         }
         commit(pending)?;
         return super::format::print_json(&doc);
@@ -223,6 +231,7 @@ pub fn run(a: &SimulateArgs) -> Result<(), CliError> {
             extra += &format!("power loss `{}`: {w:.3} W\n", sim.connection_names[*c]);
         }
     }
+    extra += &super::ratings::text(&ratings);
     commit(pending)?;
     print_analysis(&label, &analysis, &extra)
 }
