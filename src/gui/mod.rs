@@ -56,6 +56,8 @@ mod tests_recovery;
 #[cfg(test)]
 mod tests_shaft;
 #[cfg(test)]
+mod tests_snapshots;
+#[cfg(test)]
 mod tests_support;
 #[cfg(test)]
 mod tests_teaching;
