@@ -3,7 +3,7 @@
 //! cycle, and the engine torque's amplitude per order, at full load. Computed on the
 //! simulation thread ([`torsim::physics::engine_cycle`]).
 
-use crate::gui::plots::{fmt, nice_grid, tick_label};
+use crate::gui::plots::{fmt, nice_grid, nice_x_grid, tick_label};
 use egui::{Color32, Ui};
 use egui_plot::{Bar, BarChart, Legend, Line, Plot, PlotPoints};
 use torsim::physics::engine_cycle::EngineCycle;
@@ -87,7 +87,7 @@ pub fn cycle_ui(ui: &mut Ui, cycle: Option<&EngineCycle>) {
                 .height(HEIGHT)
                 .x_axis_label("engine order")
                 .y_axis_label("amplitude [N·m]")
-                .x_grid_spacer(nice_grid())
+                .x_grid_spacer(nice_x_grid())
                 .y_grid_spacer(nice_grid())
                 .x_axis_formatter(tick_label)
                 .y_axis_formatter(tick_label)

@@ -18,7 +18,7 @@ mod series;
 pub mod side_legend;
 mod stft;
 mod time_series;
-pub use time_series::nice_grid;
+pub use time_series::{nice_grid, nice_x_grid};
 mod traces;
 
 pub use super::export::PlotData;

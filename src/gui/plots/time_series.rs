@@ -133,11 +133,24 @@ pub fn hover_label(
 }
 
 /// A grid of 1-2-5 steps with labelled lines 32 to 80 points apart, so even a short plot
-/// has numbers on its axis (egui_plot's default steps by powers of ten).
+/// has numbers on its axis (egui_plot's default steps by powers of ten). For y axes:
+/// egui_plot labels y marks 20 points apart or more.
 pub fn nice_grid() -> impl Fn(GridInput) -> Vec<GridMark> {
-    egui_plot::uniform_grid_spacer(|input| {
+    grid_labelled_from(32.0)
+}
+
+/// [`nice_grid`] for x axes: labelled lines 80 to 200 points apart, since egui_plot hides
+/// x labels closer than 60 points and fades them up to 80 (a 2 s trace 550 points wide
+/// was labelled only at 0 and 1 s with the y-axis grid).
+pub fn nice_x_grid() -> impl Fn(GridInput) -> Vec<GridMark> {
+    grid_labelled_from(80.0)
+}
+
+/// 1-2-5 steps whose labelled lines are at least `points` apart.
+fn grid_labelled_from(points: f64) -> impl Fn(GridInput) -> Vec<GridMark> {
+    egui_plot::uniform_grid_spacer(move |input| {
         // `base_step_size` spans egui_plot's minimal grid spacing, 8 points.
-        let main = nice_step(4.0 * input.base_step_size);
+        let main = nice_step(points / 8.0 * input.base_step_size);
         [main / 5.0, main, main * 5.0]
     })
 }

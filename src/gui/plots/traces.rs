@@ -4,13 +4,16 @@
 //! cursors linked, growing while the run streams in, a recording's stations overlaid),
 //! the run-up spectrogram ([`super::stft`]) or the orders ([`super::recording`]).
 
-use super::time_series::{self, Look, Y_AXIS_W, draw, hover_label, nice_grid, time_link};
+use super::side_legend::{Entry, with_side_legend};
+use super::time_series::{
+    self, Look, Y_AXIS_W, draw, hover_label, nice_grid, nice_x_grid, time_link,
+};
 use super::{mode_color, recording, run_controls, stft};
 use crate::gui::app::TorsimApp;
 use crate::gui::trace_data::GroupKind;
 use crate::gui::trace_state::TraceView;
 use egui::Ui;
-use egui_plot::{Legend, Plot};
+use egui_plot::Plot;
 use torsim::recording::ChannelKind;
 
 /// The traces tab.
@@ -143,7 +146,6 @@ fn time_traces_ui(app: &mut TorsimApp, ui: &mut Ui) {
     egui::ScrollArea::vertical().show(ui, |ui| {
         for (i, ((kind, group), samples)) in layout.groups.iter().zip(&live.groups).enumerate() {
             let kind = *kind;
-            let legend = Legend::default().follow_insertion_order(true);
             let visible = &shown[i];
             // Colours by rank among the series shown, so that they differ.
             let colour = |k: usize| mode_color(visible[..k].iter().filter(|v| **v).count());
@@ -153,19 +155,63 @@ fn time_traces_ui(app: &mut TorsimApp, ui: &mut Ui) {
             } else {
                 group.axis.clone()
             };
+            let height = if i == 0 { 2.0 * unit_h } else { unit_h };
             let mut plot = Plot::new(("trace", i))
-                .height(if i == 0 { 2.0 * unit_h } else { unit_h })
+                .height(height)
                 .y_axis_min_width(Y_AXIS_W)
                 .y_grid_spacer(nice_grid())
                 .y_axis_formatter(super::tick_label)
-                .x_grid_spacer(nice_grid())
+                .x_grid_spacer(nice_x_grid())
                 .x_axis_formatter(super::tick_label)
-                .legend(legend)
                 .link_axis(time_link(), [true, false])
                 .link_cursor(time_link(), [true, false])
                 .default_x_bounds(opening[0], opening[1])
                 .y_axis_label(axis)
                 .label_formatter(hover_label(layout.clone(), unit(kind)));
+            // The recording's series of this plot: (series index, name, samples).
+            let measured_series: Vec<(usize, String, Vec<f64>)> = measured
+                .as_ref()
+                .map(|m| {
+                    let channels = m.recording.channels.iter().filter_map(|c| {
+                        match (&c.kind, kind) {
+                            (ChannelKind::SpeedRpm { node }, GroupKind::Speed)
+                            | (ChannelKind::TorqueNm { connection: node }, GroupKind::Torque) => {
+                                Some((node, &c.values))
+                            }
+                            _ => None,
+                        }
+                    });
+                    let relative = m
+                        .relative
+                        .iter()
+                        .filter(|_| kind == GroupKind::RelativeSpeed)
+                        .map(|(n, v)| (n, v));
+                    channels
+                        .chain(relative)
+                        .filter_map(|(name, values)| {
+                            let k = group.names.iter().position(|n| n == name)?;
+                            visible[k].then(|| (k, name.clone(), values.clone()))
+                        })
+                        .collect()
+                })
+                .unwrap_or_default();
+            // The legend beside the plot (issue 16: on the plot it covered the traces).
+            let mut entries: Vec<Entry> = group
+                .names
+                .iter()
+                .enumerate()
+                .filter(|(k, _)| visible[*k])
+                .map(|(k, name)| Entry {
+                    name: name.clone(),
+                    color: colour(k),
+                    dashed: false,
+                })
+                .collect();
+            entries.extend(measured_series.iter().map(|(k, name, _)| Entry {
+                name: format!("{name} (measured)"),
+                color: colour(*k),
+                dashed: true,
+            }));
             if i + 1 == n {
                 plot = plot.x_axis_label("time from the start of recording [s]");
             }
@@ -185,64 +231,53 @@ fn time_traces_ui(app: &mut TorsimApp, ui: &mut Ui) {
                     }
                 }
             };
-            plot.show(ui, |plot| {
-                let range = time_series::visible_range(plot);
-                // Measured first, under the simulated.
-                if let Some(m) = &measured {
-                    let offset = shift_s - m.t0_s;
-                    let channels = m.recording.channels.iter().filter_map(|c| {
-                        match (&c.kind, kind) {
-                            (ChannelKind::SpeedRpm { node }, GroupKind::Speed)
-                            | (ChannelKind::TorqueNm { connection: node }, GroupKind::Torque) => {
-                                Some((node, &c.values))
+            with_side_legend(ui, &format!("trace {i}"), &entries, height, |ui, hidden| {
+                plot.show(ui, |plot| {
+                    let range = time_series::visible_range(plot);
+                    // Measured first, under the simulated.
+                    if let Some(m) = &measured {
+                        let offset = shift_s - m.t0_s;
+                        for (k, name, values) in &measured_series {
+                            let label = format!("{name} (measured)");
+                            if hidden.contains(&label) {
+                                continue;
                             }
-                            _ => None,
+                            let mean = m.mean_speed_at(name, layout.speed_ratio.get(*k).copied());
+                            let baseline = |t: f64| {
+                                if kind == GroupKind::Speed && about_mean {
+                                    mean(t - shift_s)
+                                } else {
+                                    0.0
+                                }
+                            };
+                            let d = time_series::series(
+                                &m.recording.time_s,
+                                values,
+                                offset,
+                                &baseline,
+                                range,
+                                buckets,
+                            );
+                            draw(plot, &label, d, colour(*k), Look::Measured);
                         }
-                    });
-                    let relative = m
-                        .relative
-                        .iter()
-                        .filter(|_| kind == GroupKind::RelativeSpeed);
-                    for (name, values) in channels.chain(relative.map(|(n, v)| (n, v))) {
-                        let Some(k) = group.names.iter().position(|n| n == name) else {
-                            continue;
-                        };
-                        if !visible[k] {
+                    }
+                    let series = group.names.iter().zip(&samples.values).enumerate();
+                    for (k, (name, values)) in series.filter(|(k, _)| visible[*k]) {
+                        if hidden.contains(name) {
                             continue;
                         }
-                        let mean = m.mean_speed_at(name, layout.speed_ratio.get(k).copied());
-                        let baseline = |t: f64| {
-                            if kind == GroupKind::Speed && about_mean {
-                                mean(t - shift_s)
-                            } else {
-                                0.0
-                            }
-                        };
+                        let baseline = sim_mean(k);
                         let d = time_series::series(
-                            &m.recording.time_s,
+                            &samples.time_s,
                             values,
-                            offset,
+                            0.0,
                             &baseline,
                             range,
                             buckets,
                         );
-                        let label = format!("{name} (measured)");
-                        draw(plot, &label, d, colour(k), Look::Measured);
+                        draw(plot, name, d, colour(k), Look::Simulated);
                     }
-                }
-                let series = group.names.iter().zip(&samples.values).enumerate();
-                for (k, (name, values)) in series.filter(|(k, _)| visible[*k]) {
-                    let baseline = sim_mean(k);
-                    let d = time_series::series(
-                        &samples.time_s,
-                        values,
-                        0.0,
-                        &baseline,
-                        range,
-                        buckets,
-                    );
-                    draw(plot, name, d, colour(k), Look::Simulated);
-                }
+                });
             });
         }
     });
