@@ -2,12 +2,12 @@
 //! Edits go through [`TorsimApp::commit`], which keeps undo history, marks the model
 //! unsaved and sends a new request to the simulation thread.
 
-use super::recording_job::RecordingView;
-use super::schematic::{self, Selection};
-use super::trace_data::LiveTrace;
-use super::trace_job::RunAnalysis;
-use super::trace_state::{self, TraceState};
-use super::worker::{SimResult, Worker};
+use crate::gui::recording_job::RecordingView;
+use crate::gui::schematic::{self, Selection};
+use crate::gui::trace_data::LiveTrace;
+use crate::gui::trace_job::RunAnalysis;
+use crate::gui::trace_state::{self, TraceState};
+use crate::gui::worker::{SimResult, Worker};
 use super::{editor, export, files, plots, recordings};
 use std::path::PathBuf;
 use std::sync::Arc;
@@ -45,7 +45,7 @@ pub struct Results {
     /// Forced response.
     pub response: Option<Arc<Response>>,
     /// The coupling ratings on that response, and the linear range.
-    pub ratings: Option<Arc<super::worker::RatingsResult>>,
+    pub ratings: Option<Arc<crate::gui::worker::RatingsResult>>,
     /// The engine's working cycle at full load.
     pub engine_cycle: Option<Arc<torsim::physics::engine_cycle::EngineCycle>>,
     /// The finished time run.
@@ -108,24 +108,24 @@ pub struct TorsimApp {
     /// Pending file dialog results.
     pub files: files::FileDialogs,
     /// Unsaved edits about to be discarded (another model, or closing): the question.
-    pub unsaved: Option<super::unsaved::Prompt>,
+    pub unsaved: Option<crate::gui::unsaved::Prompt>,
     /// The user chose to discard unsaved edits and close.
     pub close_confirmed: bool,
     /// Recently opened or saved model files, the latest first.
     pub recent: Vec<PathBuf>,
-    /// The autosave of unsaved edits ([`super::recovery`]).
-    pub recovery: super::recovery::Recovery,
+    /// The autosave of unsaved edits ([`crate::gui::recovery`]).
+    pub recovery: crate::gui::recovery::Recovery,
     /// Counts the model's changes (edits, undo, redo, another model); the autosave
     /// writes when it moves.
     pub revision: u64,
     /// A save or export that would replace an open file, waiting for the user's answer.
-    pub confirm: Option<super::overwrite::Confirm>,
+    pub confirm: Option<crate::gui::overwrite::Confirm>,
     /// The diagnosis tab: recordings, the run, the report.
-    pub diagnosis: super::diagnosis::DiagnosisState,
+    pub diagnosis: crate::gui::diagnosis::DiagnosisState,
     /// The title last sent to the window (sent again only when it changes).
     shown_title: Option<String>,
-    /// Edit-to-plot latency, logged when asked for ([`super::latency`]).
-    latency: super::latency::Latency,
+    /// Edit-to-plot latency, logged when asked for ([`crate::gui::latency`]).
+    latency: crate::gui::latency::Latency,
     worker: Worker,
 }
 
@@ -156,12 +156,12 @@ impl TorsimApp {
             unsaved: None,
             close_confirmed: false,
             recent: Vec::new(),
-            recovery: super::recovery::Recovery::default(),
+            recovery: crate::gui::recovery::Recovery::default(),
             revision: 0,
             confirm: None,
             diagnosis: Default::default(),
             shown_title: None,
-            latency: super::latency::Latency::from_env(),
+            latency: crate::gui::latency::Latency::from_env(),
             worker: Worker::start(wake),
         };
         app.request();
@@ -347,15 +347,15 @@ impl eframe::App for TorsimApp {
 
     fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
         self.latency.frame();
-        super::unsaved::close_or_ask(self, ui.ctx());
+        crate::gui::unsaved::close_or_ask(self, ui.ctx());
         self.receive();
         files::poll(self, ui.ctx());
         export::poll(self, ui.ctx());
         recordings::poll(self);
         self.diagnosis.poll();
-        super::overwrite::ui(self, ui.ctx());
-        super::unsaved::ui(self, ui.ctx());
-        super::recovery::tick(self, ui.ctx());
+        crate::gui::overwrite::ui(self, ui.ctx());
+        crate::gui::unsaved::ui(self, ui.ctx());
+        crate::gui::recovery::tick(self, ui.ctx());
         // A viewport command repaints the window: sent on every frame, the title kept an
         // idle window redrawing at full rate (issue 16: 183 % of two cores measured).
         let title = self.title();

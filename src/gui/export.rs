@@ -1,11 +1,11 @@
 //! Exports: the data a plot shows as CSV ([`PlotData`], [`csv_text`]) and the window as
 //! PNG ([`png_bytes`]). The file dialog, the encoding and the writing run on their own
-//! thread (as the model dialogs of [`super::files`] do); the outcome comes back over a
+//! thread (as the model dialogs of [`crate::gui::files`] do); the outcome comes back over a
 //! channel and shows in the status line.
 
-use super::app::TorsimApp;
-use super::background::{self, Lost, Pending};
-use super::overwrite::PendingWrite;
+use crate::gui::app::TorsimApp;
+use crate::gui::background::{self, Lost, Pending};
+use crate::gui::overwrite::PendingWrite;
 use std::fmt::Write as _;
 use std::path::PathBuf;
 use std::sync::Arc;
@@ -134,7 +134,7 @@ type Outcome = Option<Result<PathBuf, String>>;
 #[derive(Default)]
 pub struct Exports {
     /// A CSV dialog: the path chosen and the data (written once checked against the
-    /// open files, [`super::overwrite`]).
+    /// open files, [`crate::gui::overwrite`]).
     csv: Option<Pending<Option<(PathBuf, PlotData)>>>,
     /// The PNG dialog; the screenshot is taken once it has closed.
     png_path: Option<Pending<Option<PathBuf>>>,
@@ -219,13 +219,13 @@ pub fn poll(app: &mut TorsimApp, ctx: &egui::Context) {
     // Issue 13: a chosen path that is an open file is written only once the user agrees.
     match background::take(&mut app.exports.csv) {
         Some(Ok(Some((path, data)))) => {
-            super::overwrite::request(app, ctx, PendingWrite::PlotCsv(path, data))
+            crate::gui::overwrite::request(app, ctx, PendingWrite::PlotCsv(path, data))
         }
         Some(Err(Lost)) => report(failed(), "", &mut app.status),
         _ => {}
     }
     match background::take(&mut app.exports.png_path) {
-        Some(Ok(Some(path))) => super::overwrite::request(app, ctx, PendingWrite::Png(path)),
+        Some(Ok(Some(path))) => crate::gui::overwrite::request(app, ctx, PendingWrite::Png(path)),
         Some(Err(Lost)) => report(failed(), "", &mut app.status),
         _ => {}
     }

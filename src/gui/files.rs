@@ -1,10 +1,10 @@
 //! The menu bar and files: new, open (also recent files) and save models (TOML per the
 //! spec, written atomically), presets, undo and redo. File dialogs run on their own thread
 //! so the window never freezes; their answer arrives over a channel. Whatever replaces
-//! the model asks first when it has unsaved edits ([`super::unsaved`]).
+//! the model asks first when it has unsaved edits ([`crate::gui::unsaved`]).
 
-use super::app::TorsimApp;
-use super::background::{self, Pending};
+use crate::gui::app::TorsimApp;
+use crate::gui::background::{self, Pending};
 use std::path::PathBuf;
 use torsim::model::{parse_model, presets::PRESETS, read_model_file, save_model_file};
 
@@ -35,7 +35,7 @@ pub fn save_to(app: &mut TorsimApp, path: PathBuf) {
             remember_recent(app, &path);
             app.path = Some(path);
             app.dirty = false;
-            super::recovery::discard(app);
+            crate::gui::recovery::discard(app);
         }
         Err(e) => app.status = format!("could not save {}: {e}", path.display()),
     }
@@ -69,7 +69,7 @@ fn remember_recent(app: &mut TorsimApp, path: &std::path::Path) {
 /// Replaces the model (a file opened, a preset or a new model); undo history starts
 /// afresh, and what belonged to the old model goes with it (issue 16): its results, the
 /// selections, the open recording, the diagnosis and its report, the plots' zoom. Call
-/// it through [`super::unsaved::replace_or_ask`], which asks before unsaved edits go.
+/// it through [`crate::gui::unsaved::replace_or_ask`], which asks before unsaved edits go.
 pub fn replace_model(app: &mut TorsimApp, model: torsim::model::Model, path: Option<PathBuf>) {
     if let Some(p) = &path {
         remember_recent(app, p);
@@ -83,15 +83,15 @@ pub fn replace_model(app: &mut TorsimApp, model: torsim::model::Model, path: Opt
     app.selected = None;
     app.selected_mode = 0;
     app.stations.clear();
-    app.plots = super::plots::PlotState {
+    app.plots = crate::gui::plots::PlotState {
         model_epoch: app.plots.model_epoch + 1,
         amplitude_deg: app.plots.amplitude_deg,
         ..Default::default()
     };
     app.traces = Default::default();
     app.diagnosis.clear_for_new_model();
-    app.trace_speed_rpm = super::app::default_trace_speed_rpm(&app.model);
-    super::recovery::discard(app);
+    app.trace_speed_rpm = crate::gui::app::default_trace_speed_rpm(&app.model);
+    crate::gui::recovery::discard(app);
     app.request();
 }
 
@@ -101,7 +101,7 @@ fn open_path(app: &mut TorsimApp, path: PathBuf) {
     match read_model_file(&path) {
         Ok(model) => {
             let status = format!("opened {}", path.display());
-            super::unsaved::replace_or_ask(app, model, Some(path), status);
+            crate::gui::unsaved::replace_or_ask(app, model, Some(path), status);
         }
         Err(e) => {
             app.recent.retain(|p| *p != path);
@@ -117,7 +117,7 @@ pub fn poll(app: &mut TorsimApp, ctx: &egui::Context) {
     }
     if let Some(Ok(Some(path))) = background::take(&mut app.files.save) {
         // Issue 13: over an open recording only once the user agrees.
-        super::overwrite::request(app, ctx, super::overwrite::PendingWrite::Model(path));
+        crate::gui::overwrite::request(app, ctx, crate::gui::overwrite::PendingWrite::Model(path));
     }
 }
 
@@ -145,16 +145,16 @@ pub fn menu_ui(app: &mut TorsimApp, ui: &mut egui::Ui) {
                     }
                 }
             });
-            if super::recovery::can_recover(app)
+            if crate::gui::recovery::can_recover(app)
                 && ui
                     .button("Recover unsaved edits…")
                     .on_hover_text("the edits of a torsim window that ended without saving")
                     .clicked()
             {
-                super::recovery::recover(app);
+                crate::gui::recovery::recover(app);
             }
             if ui.button("Open recording…").clicked() {
-                super::recordings::open_dialog(app, ui.ctx());
+                crate::gui::recordings::open_dialog(app, ui.ctx());
             }
             if ui.button("Save").clicked() {
                 match app.path.clone() {
@@ -167,13 +167,13 @@ pub fn menu_ui(app: &mut TorsimApp, ui: &mut egui::Ui) {
             }
             ui.separator();
             if ui.button("Export plot as CSV…").clicked() {
-                match super::plots::plot_data(app) {
-                    Some(data) => super::export::export_csv(&mut app.exports, ui.ctx(), data),
+                match crate::gui::plots::plot_data(app) {
+                    Some(data) => crate::gui::export::export_csv(&mut app.exports, ui.ctx(), data),
                     None => app.status = "nothing to export yet".into(),
                 }
             }
             if ui.button("Export window as PNG…").clicked() {
-                super::export::export_png(&mut app.exports, ui.ctx());
+                crate::gui::export::export_png(&mut app.exports, ui.ctx());
             }
         });
         ui.menu_button("Presets", |ui| {
@@ -182,7 +182,7 @@ pub fn menu_ui(app: &mut TorsimApp, ui: &mut egui::Ui) {
                     && let Ok(model) = parse_model(p.text, p.name)
                 {
                     let status = format!("preset {}", p.name);
-                    super::unsaved::replace_or_ask(app, model, None, status);
+                    crate::gui::unsaved::replace_or_ask(app, model, None, status);
                 }
             }
         });
@@ -217,6 +217,6 @@ pub fn new_model(app: &mut TorsimApp) {
     if let Ok(mut model) = parse_model(p.text, p.name) {
         model.name = "untitled".into();
         let status = "new model: two inertias and a shaft; add to it in the driveline panel";
-        super::unsaved::replace_or_ask(app, model, None, status.into());
+        crate::gui::unsaved::replace_or_ask(app, model, None, status.into());
     }
 }

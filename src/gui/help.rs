@@ -2,7 +2,7 @@
 //! question). Written for a student who knows rotating machinery but not yet torsional
 //! vibration.
 
-use super::app::Tab;
+use crate::gui::app::Tab;
 
 /// The explanation of `tab`.
 pub fn tab_help(tab: Tab) -> &'static str {

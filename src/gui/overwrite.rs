@@ -4,8 +4,8 @@
 //! files; a path that resolves to one of them waits in a modal ("Replace an open file?")
 //! until the user replaces it or cancels.
 
-use super::app::TorsimApp;
-use super::export::PlotData;
+use crate::gui::app::TorsimApp;
+use crate::gui::export::PlotData;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 use torsim::diagnose::Report;
@@ -89,21 +89,21 @@ pub fn request(app: &mut TorsimApp, ctx: &egui::Context, write: PendingWrite) {
 /// Does `write` (the user agreed, or nothing open is replaced).
 pub fn perform(app: &mut TorsimApp, ctx: &egui::Context, write: PendingWrite) {
     match write {
-        PendingWrite::Model(path) => super::files::save_to(app, path),
+        PendingWrite::Model(path) => crate::gui::files::save_to(app, path),
         PendingWrite::PlotCsv(path, data) => {
-            app.status = match torsim::files::write_atomic(&path, super::export::csv_text(&data)) {
+            app.status = match torsim::files::write_atomic(&path, crate::gui::export::csv_text(&data)) {
                 Ok(()) => format!("exported the plot data to {}", path.display()),
                 Err(e) => format!("could not write {}: {e}", path.display()),
             }
         }
-        PendingWrite::Png(path) => super::export::screenshot_to(&mut app.exports, ctx, path),
+        PendingWrite::Png(path) => crate::gui::export::screenshot_to(&mut app.exports, ctx, path),
         PendingWrite::Report {
             path,
             report,
             model_name,
         } => {
             app.diagnosis.message =
-                match super::diagnosis::save::write_page(&path, &report, &model_name) {
+                match crate::gui::diagnosis::save::write_page(&path, &report, &model_name) {
                     Ok(path) => format!("saved the report to {}", path.display()),
                     Err(e) => e,
                 }

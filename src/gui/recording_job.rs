@@ -5,9 +5,9 @@
 //! linear run-up fitted to its reference speed. The last one is kept while the file and
 //! the model's nodes stay the same.
 
-use super::spectrogram::SpectrogramSet;
-use super::trace_data::profile_rpm;
-use super::trace_series::relative_name;
+use crate::gui::spectrogram::SpectrogramSet;
+use crate::gui::trace_data::profile_rpm;
+use crate::gui::trace_series::relative_name;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 use std::time::SystemTime;

@@ -1,11 +1,11 @@
 //! Recordings in the window: File → Open recording… asks for a CSV on a background thread
 //! (rfd, so the window never freezes); the path goes to the simulation thread with the
-//! next request, which reads and analyses it ([`super::recording_job`]) and simulates its
+//! next request, which reads and analyses it ([`crate::gui::recording_job`]) and simulates its
 //! regime; the traces tab overlays the two. Its stations are marked in the schematic.
 
-use super::app::{Tab, TorsimApp};
-use super::background;
-use super::trace_state::{TraceMode, TraceView};
+use crate::gui::app::{Tab, TorsimApp};
+use crate::gui::background;
+use crate::gui::trace_state::{TraceMode, TraceView};
 use std::path::PathBuf;
 
 /// Opens the file dialog on its own thread; the answer is taken by [`poll`].

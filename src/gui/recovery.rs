@@ -11,8 +11,8 @@
 //! running are the ones to recover. The file is the model file (spec model format) with
 //! a first comment line naming the file the model came from.
 
-use super::app::TorsimApp;
-use super::background::{self, Pending};
+use crate::gui::app::TorsimApp;
+use crate::gui::background::{self, Pending};
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 use torsim::model::{Model, parse_model};
@@ -207,7 +207,7 @@ pub fn recover(app: &mut TorsimApp) {
         "recovered the unsaved edits of “{}” from a window that ended without saving",
         orphan.model.name
     );
-    super::unsaved::replace_or_ask_recovered(app, orphan, status);
+    crate::gui::unsaved::replace_or_ask_recovered(app, orphan, status);
 }
 
 /// The model just shown came from `file`, an ended window's recovery file: it is

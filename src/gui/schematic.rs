@@ -14,8 +14,8 @@ mod symbols;
 mod tests;
 mod tree;
 
-use super::app::TorsimApp;
-use super::editor::fields::format_value as num;
+use crate::gui::app::TorsimApp;
+use crate::gui::editor::fields::format_value as num;
 use egui::{Sense, Ui};
 use torsim::model::{ConnectionKind, ModalDamping, Model, RubberStiffness};
 
@@ -163,7 +163,7 @@ pub fn describe(model: &Model, sel: Selection, stations: &[String]) -> String {
                         "static k at 25 °C = {} N·m/rad{elements}\npsi = {} (loss factor {})\nrubber at {} °C",
                         num(k),
                         num(r.psi),
-                        super::editor::fields::format_sig(r.psi / std::f64::consts::TAU, 3),
+                        crate::gui::editor::fields::format_sig(r.psi / std::f64::consts::TAU, 3),
                         num(r.temperature_c)
                     )
                 }

@@ -1,10 +1,10 @@
 //! What the window opens on, in this order: a model named on the command line (an ended
 //! window's unsaved edits are then offered in the File menu), else the newest unsaved
-//! edits of a window that ended without saving ([`super::recovery`]), else the last
+//! edits of a window that ended without saving ([`crate::gui::recovery`]), else the last
 //! session (eframe's store, unsaved edits included), else the default preset.
 
-use super::app::{self, TorsimApp};
-use super::recovery::{self, Orphan, Recovery};
+use crate::gui::app::{self, TorsimApp};
+use crate::gui::recovery::{self, Orphan, Recovery};
 use std::path::{Path, PathBuf};
 use torsim::model::Model;
 

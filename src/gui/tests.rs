@@ -2,8 +2,8 @@
 //! the driveline panel and watch the 3rd-order crossing move, type an invalid value and see
 //! the error while the last good results stay, save and reopen.
 
-use super::app::TorsimApp;
-use super::files::save_to;
+use crate::gui::app::TorsimApp;
+use crate::gui::files::save_to;
 use egui::Key;
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
@@ -189,8 +189,8 @@ fn unsaved_edits_survive_a_restart() {
     h.state_mut().commit(before);
     let mut storage = MemoryStorage::default();
     eframe::App::save(h.state_mut(), &mut storage);
-    let (model, path, dirty) = super::startup::last_session(Some(&storage)).expect("restored");
+    let (model, path, dirty) = crate::gui::startup::last_session(Some(&storage)).expect("restored");
     assert_eq!(model, h.state().model);
     assert!(dirty && path.is_none());
-    assert!(super::startup::last_session(Some(&MemoryStorage::default())).is_none());
+    assert!(crate::gui::startup::last_session(Some(&MemoryStorage::default())).is_none());
 }

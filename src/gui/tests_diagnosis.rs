@@ -2,10 +2,10 @@
 //! recordings; a finished report shows its verdict, candidates and Accept, and Accept
 //! puts the verdict into the model as one undo step; a real diagnosis of two recordings
 //! runs on its own thread with progress and comes back with a report
-//! ([`super::tests_diagnosis_run`]).
+//! ([`crate::gui::tests_diagnosis_run`]).
 
-use super::app::{Tab, TorsimApp};
-use super::diagnosis::finished::Finished;
+use crate::gui::app::{Tab, TorsimApp};
+use crate::gui::diagnosis::finished::Finished;
 use egui_kittest::Harness;
 use egui_kittest::kittest::{NodeT, Queryable};
 use std::collections::BTreeMap;
@@ -248,7 +248,7 @@ fn the_report_page_is_written_atomically() {
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).expect("temp dir");
     let page = dir.join("diagnosis.html");
-    let written = super::diagnosis::save::write_page(&page, &report(), "bench").expect("page");
+    let written = crate::gui::diagnosis::save::write_page(&page, &report(), "bench").expect("page");
     assert_eq!(written, page);
     let html = std::fs::read_to_string(&page).expect("read");
     assert!(html.contains("parameter_error") && html.contains("Regime B"));
@@ -258,7 +258,7 @@ fn the_report_page_is_written_atomically() {
         "no temporary"
     );
     let missing = dir.join("no/such/folder/r.html");
-    let e = super::diagnosis::save::write_page(&missing, &report(), "bench").unwrap_err();
+    let e = crate::gui::diagnosis::save::write_page(&missing, &report(), "bench").unwrap_err();
     assert!(e.contains("no/such/folder/r.html"), "{e}");
     let _ = std::fs::remove_dir_all(&dir);
 }

@@ -2,8 +2,8 @@
 //! (about 10 s in the dev profile) diagnosed on the diagnosis thread with progress, and
 //! Cancel stopping it.
 
-use super::diagnosis::load::Source;
-use super::tests_diagnosis::{harness, step_until};
+use crate::gui::diagnosis::load::Source;
+use crate::gui::tests_diagnosis::{harness, step_until};
 use egui_kittest::kittest::{NodeT, Queryable};
 use std::path::{Path, PathBuf};
 use std::time::Duration;

@@ -3,9 +3,9 @@
 //! functions), renaming a node renames every reference, a drag is one undo step, an
 //! invalid value marks the widget that edits it — for every key `validate` can produce.
 
-use super::app::TorsimApp;
-use super::schematic::geometry::{self, Geometry};
-use super::schematic::{CANVAS_LABEL, Selection, layout};
+use crate::gui::app::TorsimApp;
+use crate::gui::schematic::geometry::{self, Geometry};
+use crate::gui::schematic::{CANVAS_LABEL, Selection, layout};
 use egui::{Key, Modifiers, Pos2, vec2};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
@@ -45,7 +45,7 @@ fn click_at(h: &mut Harness<'static, TorsimApp>, pos: Pos2) {
 /// The keys at which the editor showed the validation error in the last frame.
 pub(super) fn shown(h: &Harness<'static, TorsimApp>) -> Vec<String> {
     h.ctx
-        .data(|d| d.get_temp::<Vec<String>>(super::editor::shown_id()))
+        .data(|d| d.get_temp::<Vec<String>>(crate::gui::editor::shown_id()))
         .unwrap_or_default()
 }
 
@@ -242,7 +242,7 @@ fn a_typed_value_is_one_undo_step_and_an_invalid_one_is_marked_at_its_key() {
 fn every_validation_key_is_shown_where_it_is_edited() {
     let mut h = harness(preset("cng-genset"));
     h.run_steps(2);
-    for (base, break_it) in super::tests_edit_cases::cases() {
+    for (base, break_it) in crate::gui::tests_edit_cases::cases() {
         let mut model = base.clone();
         break_it(&mut model);
         let key = validate(&model).expect_err("the case breaks the model").key;

@@ -3,8 +3,8 @@
 //! connections; an order list typed as text, refused when it does not parse, marked at the
 //! bad entry when it does.
 
-use super::schematic::Selection;
-use super::tests_edit::{harness, preset, rename, shown};
+use crate::gui::schematic::Selection;
+use crate::gui::tests_edit::{harness, preset, rename, shown};
 use egui::Key;
 use egui_kittest::kittest::Queryable;
 use torsim::model::validate;

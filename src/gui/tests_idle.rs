@@ -4,8 +4,8 @@
 //! measured idle under Xvfb before). The mode-shape animation repaints only while it
 //! plays, at 30 frames a second. `scripts/gui-idle-cpu.sh` measures the real window.
 
-use super::app::TorsimApp;
-use super::tests_support::{app_on, step_until};
+use crate::gui::app::TorsimApp;
+use crate::gui::tests_support::{app_on, step_until};
 use egui::ViewportId;
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;

@@ -4,8 +4,8 @@
 //! AccessKit reports must end inside the window's width (panels wrap or scroll vertically
 //! instead; only the schematic scrolls sideways, by design).
 
-use super::app::{Tab, TorsimApp};
-use super::tests_support::{app_on, step_until};
+use crate::gui::app::{Tab, TorsimApp};
+use crate::gui::tests_support::{app_on, step_until};
 use egui_kittest::Harness;
 use egui_kittest::kittest::NodeT;
 
@@ -31,7 +31,7 @@ fn off_the_right_edge(h: &Harness<'static, TorsimApp>, width: f32) -> Vec<String
             let b = node.bounding_box()?;
             let (x0, x1) = (b.x0 as f32 / ppp, b.x1 as f32 / ppp);
             // The schematic scrolls sideways when the driveline is longer than the window.
-            let scrolls = label == super::schematic::CANVAS_LABEL;
+            let scrolls = label == crate::gui::schematic::CANVAS_LABEL;
             (x1 > width + 1.0 && x1 > x0 && !scrolls).then(|| {
                 format!(
                     "{label:?} {:?} {:?} ends at {x1:.0} (from {x0:.0})",
@@ -68,8 +68,8 @@ fn no_tab_runs_off_the_window() {
 /// window's width at both sizes.
 #[test]
 fn a_diagnosis_report_fits_the_window() {
-    use super::diagnosis::finished::Finished;
-    use super::tests_diagnosis::{bench, report};
+    use crate::gui::diagnosis::finished::Finished;
+    use crate::gui::tests_diagnosis::{bench, report};
     // At the smallest window the candidates table scrolls sideways (eight columns).
     for size in [[1280.0, 800.0], [1920.0, 1080.0]] {
         let mut h = Harness::builder().with_size(size).build_eframe(|cc| {

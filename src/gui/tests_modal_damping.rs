@@ -2,8 +2,8 @@
 //! typed, switched to a list per mode and extended, shown in the schematic's corner, one
 //! undo step per edit, and a ζ ≥ 1 refused at its key.
 
-use super::schematic::modal_label;
-use super::tests_edit::{harness, preset};
+use crate::gui::schematic::modal_label;
+use crate::gui::tests_edit::{harness, preset};
 use egui::Key;
 use egui_kittest::kittest::Queryable;
 use torsim::model::ModalDamping;

@@ -2,9 +2,9 @@
 //! (CSV or sidecar) asks first; "Cancel" leaves the file, "Replace" writes it; a path that
 //! is no open file is written at once.
 
-use super::app::TorsimApp;
-use super::export::PlotData;
-use super::overwrite::{PendingWrite, request};
+use crate::gui::app::TorsimApp;
+use crate::gui::export::PlotData;
+use crate::gui::overwrite::{PendingWrite, request};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 use std::path::PathBuf;

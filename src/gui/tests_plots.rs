@@ -2,9 +2,9 @@
 //! selects it (and the selection survives an edit), the Campbell CSV, the forced-response
 //! quantity selector.
 
-use super::app::{Tab, TorsimApp};
-use super::export::csv_text;
-use super::plots::{self, CAMPBELL_PLOT_ID, CrossingKey, crossing_at, crossing_response};
+use crate::gui::app::{Tab, TorsimApp};
+use crate::gui::export::csv_text;
+use crate::gui::plots::{self, CAMPBELL_PLOT_ID, CrossingKey, crossing_at, crossing_response};
 use egui::accesskit::Role;
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;

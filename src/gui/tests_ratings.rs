@@ -3,9 +3,9 @@
 //! said above the plot — in the operating range, outside it, and where the linear model
 //! leaves its range.
 
-use super::app::{Tab, TorsimApp};
-use super::plots::{Quantity, plot_data};
-use super::tests_support::{app_on, step_until};
+use crate::gui::app::{Tab, TorsimApp};
+use crate::gui::plots::{Quantity, plot_data};
+use crate::gui::tests_support::{app_on, step_until};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 

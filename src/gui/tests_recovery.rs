@@ -2,13 +2,13 @@
 //! app (egui_kittest, no display needed) in a child process — this test binary again,
 //! running only [`crash_child`] — makes an edit there, waits until the autosave has
 //! written it, and kills the child with SIGKILL: nothing of the app runs after the edit's
-//! autosave, as in a crash. The next start ([`super::startup::open_app`]) must restore
+//! autosave, as in a crash. The next start ([`crate::gui::startup::open_app`]) must restore
 //! the edit, unsaved, and take over the ended window's file.
 
-use super::app::TorsimApp;
-use super::recovery::{self, Recovery};
-use super::startup::open_app;
-use super::tests_unsaved::dir;
+use crate::gui::app::TorsimApp;
+use crate::gui::recovery::{self, Recovery};
+use crate::gui::startup::open_app;
+use crate::gui::tests_unsaved::dir;
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 use std::path::{Path, PathBuf};

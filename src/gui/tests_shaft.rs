@@ -2,8 +2,8 @@
 //! section, its segments automatic until the user sets a number, each one undo step, the
 //! results recomputed with the exact element, and a negative inertia refused at its key.
 
-use super::app::TorsimApp;
-use super::tests_edit::{harness, preset};
+use crate::gui::app::TorsimApp;
+use crate::gui::tests_edit::{harness, preset};
 use egui::Key;
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;

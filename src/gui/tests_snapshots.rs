@@ -5,8 +5,8 @@
 //! `tests/snapshots/gui-<tab>-<width>x<height>.png`; after an intended change, rerun with
 //! `UPDATE_SNAPSHOTS=1` and look at the new images before committing them.
 
-use super::app::{Tab, TorsimApp};
-use super::tests_support::{preset_model, step_until};
+use crate::gui::app::{Tab, TorsimApp};
+use crate::gui::tests_support::{preset_model, step_until};
 use egui_kittest::{Harness, SnapshotOptions};
 
 /// The real app on `preset`, rendered by wgpu, with its results in.

@@ -1,7 +1,7 @@
 //! What the window's tests share: the real app on a preset at a window size, and stepping
 //! it until the simulation thread has delivered what a test waits for.
 
-use super::app::TorsimApp;
+use crate::gui::app::TorsimApp;
 use egui_kittest::Harness;
 use std::time::{Duration, Instant};
 use torsim::model::{Model, parse_model, presets};

@@ -3,10 +3,10 @@
 //! The teaching presets' modes against their closed forms are held by their `[expect]`
 //! (`torsim check`, and `tests/presets.rs`).
 
-use super::app::{Tab, TorsimApp};
-use super::plots::CrossingKey;
-use super::tests_support::{app_on, step_until};
-use super::trace_state::TraceMode;
+use crate::gui::app::{Tab, TorsimApp};
+use crate::gui::plots::CrossingKey;
+use crate::gui::tests_support::{app_on, step_until};
+use crate::gui::trace_state::TraceMode;
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 
@@ -27,7 +27,7 @@ fn every_tab_has_its_explanation() {
         Tab::Traces,
         Tab::Diagnosis,
     ] {
-        let text = super::help::tab_help(tab);
+        let text = crate::gui::help::tab_help(tab);
         let sentences = text.matches(". ").count() + 1;
         assert!(
             (3..=4).contains(&sentences),

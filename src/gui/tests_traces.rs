@@ -3,9 +3,9 @@
 //! newer edit cancels it, a recording opens and is overlaid by the simulation of its
 //! regime, a bad recording shows an error naming its file.
 
-use super::app::TorsimApp;
-use super::recordings::open_recording;
-use super::trace_data::GroupKind;
+use crate::gui::app::TorsimApp;
+use crate::gui::recordings::open_recording;
+use crate::gui::trace_data::GroupKind;
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 use std::path::PathBuf;
@@ -107,7 +107,7 @@ fn a_run_up_streams_in_and_adds_up_to_the_finished_run() {
     assert_eq!(torque.values, sim_torque);
     assert!(live.chunks >= 3, "{} chunks", live.chunks);
     // The CSV export holds every streamed series with its unit, and the reference speed.
-    let data = super::plots::traces_data(app).expect("traces export");
+    let data = crate::gui::plots::traces_data(app).expect("traces export");
     let names: Vec<&str> = data.columns.iter().map(|(n, _)| n.as_str()).collect();
     assert_eq!(names[0], "reference speed engine [rpm]", "{names:?}");
     assert!(names.contains(&"IAS engine [rpm]"), "{names:?}");

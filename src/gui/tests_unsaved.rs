@@ -2,12 +2,12 @@
 //! replaces the model (a preset, File → Open, File → New, a recent file) and closing the
 //! window ask before unsaved edits go — Cancel keeps them with their undo history, Save
 //! writes them first, Discard lets them go — and what belonged to the old model goes
-//! with it. The autosave of [`super::recovery`] writes within 2 s of an edit and is
+//! with it. The autosave of [`crate::gui::recovery`] writes within 2 s of an edit and is
 //! removed by a save.
 
-use super::app::TorsimApp;
-use super::files;
-use super::recovery::{AUTOSAVE_AFTER, Recovery};
+use crate::gui::app::TorsimApp;
+use crate::gui::files;
+use crate::gui::recovery::{AUTOSAVE_AFTER, Recovery};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 use std::path::PathBuf;
@@ -21,7 +21,7 @@ pub(super) fn dir(name: &str) -> PathBuf {
     dir
 }
 
-use super::tests_support::preset_model as preset;
+use crate::gui::tests_support::preset_model as preset;
 
 fn harness(path: Option<PathBuf>) -> Harness<'static, TorsimApp> {
     let model = preset("cng-genset");
@@ -162,7 +162,7 @@ fn closing_with_unsaved_edits_asks_and_cancel_stays() {
 fn another_model_clears_the_old_models_state() {
     let mut h = harness(None);
     let app = h.state_mut();
-    app.selected = Some(super::schematic::Selection::Engine);
+    app.selected = Some(crate::gui::schematic::Selection::Engine);
     app.selected_mode = 1;
     app.stations = vec!["flywheel".into()];
     app.traces.recording = Some(PathBuf::from("/no/such/recording.csv"));
@@ -200,7 +200,7 @@ fn the_autosave_writes_within_two_seconds_and_a_save_removes_it() {
         h.step();
     }
     assert!(start.elapsed() >= AUTOSAVE_AFTER - Duration::from_millis(50));
-    let orphan = super::recovery::orphans_including_running(&d);
+    let orphan = crate::gui::recovery::orphans_including_running(&d);
     assert_eq!(orphan.len(), 1);
     assert_eq!(orphan[0].model, edited);
     assert_eq!(orphan[0].path.as_deref(), Some(saved.as_path()));

@@ -5,11 +5,11 @@
 //! (`torsim::signal`: orders per station, STFT images of a run-up). It stops as soon as
 //! the request is stale or cancelled.
 
-use super::recording_job::{RecordingView, analysis_options, max_frequency_hz};
-use super::spectrogram::SpectrogramSet;
-use super::trace_data::{TraceChunk, TraceSpec};
-use super::trace_series::SeriesBuilder;
-use super::worker::SimResult;
+use crate::gui::recording_job::{RecordingView, analysis_options, max_frequency_hz};
+use crate::gui::spectrogram::SpectrogramSet;
+use crate::gui::trace_data::{TraceChunk, TraceSpec};
+use crate::gui::trace_series::SeriesBuilder;
+use crate::gui::worker::SimResult;
 use std::sync::Arc;
 use std::time::{Duration, Instant};
 use torsim::model::Model;

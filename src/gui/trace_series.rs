@@ -4,7 +4,7 @@
 //! connection, power loss per rubber stage averaged over each working cycle (the
 //! instantaneous loss swings with every firing), and rubber temperatures.
 
-use super::trace_data::{GroupKind, GroupLayout, GroupSamples, TraceChunk, TraceLayout};
+use crate::gui::trace_data::{GroupKind, GroupLayout, GroupSamples, TraceChunk, TraceLayout};
 use torsim::model::{ConnectionKind, GROUND, Model};
 use torsim::physics::System;
 use torsim::recording::Run;

@@ -3,10 +3,10 @@
 //! (traces, spectrogram, orders), the selected station; and the results of the time run
 //! taken from the worker's messages.
 
-use super::app::TorsimApp;
-use super::background::Pending;
-use super::trace_data::{LiveTrace, TraceSpec};
-use super::worker::SimResult;
+use crate::gui::app::TorsimApp;
+use crate::gui::background::Pending;
+use crate::gui::trace_data::{LiveTrace, TraceSpec};
+use crate::gui::worker::SimResult;
 use std::path::PathBuf;
 use torsim::model::Model;
 use torsim::recording::Run;
@@ -129,8 +129,8 @@ impl TraceState {
 
 /// What a request's time run will be, for a person, until the worker says.
 pub fn pending_label(spec: &TraceSpec) -> String {
-    match super::trace_job::resolve(spec, None) {
-        Ok(kind) => super::trace_job::describe(kind),
+    match crate::gui::trace_job::resolve(spec, None) {
+        Ok(kind) => crate::gui::trace_job::describe(kind),
         Err(_) => "the recording's regime (reading the recording)".into(),
     }
 }

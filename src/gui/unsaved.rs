@@ -4,8 +4,8 @@
 //! model that has no file yet opens Save as…, and the waiting action runs once the save
 //! has made the model clean (a cancelled or failed save brings the question back).
 
-use super::app::TorsimApp;
-use super::files;
+use crate::gui::app::TorsimApp;
+use crate::gui::files;
 use std::path::PathBuf;
 use torsim::model::Model;
 
@@ -19,7 +19,7 @@ pub struct Replacement {
     /// The status line once it is shown (`"opened …"`).
     pub status: String,
     /// The recovery file it was read from, when it is an ended window's unsaved edits
-    /// ([`super::recovery`]).
+    /// ([`crate::gui::recovery`]).
     pub recovered_from: Option<PathBuf>,
 }
 
@@ -57,7 +57,7 @@ pub fn replace_or_ask(app: &mut TorsimApp, model: Model, path: Option<PathBuf>, 
 /// As [`replace_or_ask`], for the unsaved edits of an ended window.
 pub fn replace_or_ask_recovered(
     app: &mut TorsimApp,
-    orphan: super::recovery::Orphan,
+    orphan: crate::gui::recovery::Orphan,
     status: String,
 ) {
     ask_unless_clean(
@@ -108,12 +108,12 @@ fn finish(app: &mut TorsimApp, after: After, ctx: Option<&egui::Context>) {
             files::replace_model(app, model, path);
             app.status = status;
             if let Some(file) = recovered_from {
-                super::recovery::adopt(app, file);
+                crate::gui::recovery::adopt(app, file);
             }
         }
         After::Close => {
             app.close_confirmed = true;
-            super::recovery::discard(app);
+            crate::gui::recovery::discard(app);
             if let Some(ctx) = ctx {
                 ctx.send_viewport_cmd(egui::ViewportCommand::Close);
             }

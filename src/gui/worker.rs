@@ -5,12 +5,12 @@
 //! runs the time run in chunks ([`trace_job`]). A newer request, or the Cancel button,
 //! cancels the run in progress. Every send wakes the GUI (`request_repaint`).
 //!
-//! [`recording_job`]: super::recording_job
-//! [`trace_job`]: super::trace_job
+//! [`recording_job`]: crate::gui::recording_job
+//! [`trace_job`]: crate::gui::trace_job
 
-use super::recording_job::{RecordingCache, RecordingView};
-use super::trace_data::{TraceChunk, TraceLayout, TraceSpec};
-use super::trace_job::{self, RunAnalysis};
+use crate::gui::recording_job::{RecordingCache, RecordingView};
+use crate::gui::trace_data::{TraceChunk, TraceLayout, TraceSpec};
+use crate::gui::trace_job::{self, RunAnalysis};
 use crossbeam_channel::{Receiver, Sender, TryRecvError, unbounded};
 use std::path::PathBuf;
 use std::sync::Arc;

@@ -2,8 +2,8 @@
 //! fitted parameter count, χ²/N on the data the fit used and on the held-out data before
 //! and after, and the score that ranked it; the verdict's row highlighted.
 
-use super::finished::{sig4, value_text};
-use super::verdict::VERDICT_COLOR;
+use crate::gui::diagnosis::finished::{sig4, value_text};
+use crate::gui::diagnosis::verdict::VERDICT_COLOR;
 use egui::{RichText, Ui};
 use torsim::diagnose::Report;
 use torsim::diagnose::decide::EFFECT_MARGIN;

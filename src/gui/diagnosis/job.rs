@@ -1,11 +1,11 @@
 //! A diagnosis runs on its own thread (`torsim-diagnose`), as the simulation thread does
-//! its work (`super::super::worker`): the GUI thread only starts it and takes its
+//! its work (`crate::gui::worker`): the GUI thread only starts it and takes its
 //! messages. Each run has an id (its generation): messages of an older run are dropped.
 //! The progress callback sends the fraction and stage, wakes the GUI
 //! (`request_repaint`) and returns false once Cancel set the flag, which ends the run at
 //! its next step. The verdict's model ([`Finished`]) is built on the thread too.
 
-use super::finished::Finished;
+use crate::gui::diagnosis::finished::Finished;
 use crate::gui::background;
 use crossbeam_channel::Receiver;
 use std::sync::Arc;

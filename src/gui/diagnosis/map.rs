@@ -5,7 +5,7 @@
 //! with an outline, drawn over them. Where cells overlap the worst is on top, and the
 //! hover read-out lists every cell under the pointer.
 
-use super::finished::sig4;
+use crate::gui::diagnosis::finished::sig4;
 use crate::gui::plots::colour_scale::gradient_bar;
 use egui::{Align2, Color32, Rect, Sense, Stroke, Ui, Vec2};
 use egui_plot::{HoverPosition, Plot, PlotPoints, Polygon};

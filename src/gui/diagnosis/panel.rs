@@ -1,9 +1,9 @@
 //! The diagnosis tab: recordings (add, list, remove), Diagnose with progress and Cancel,
-//! then the finished report — verdict and Accept ([`super::verdict`]), the mismatch map
-//! ([`super::map`]), the candidates ([`super::candidates`]) and the before/after
-//! overlays ([`super::overlays`]).
+//! then the finished report — verdict and Accept ([`crate::gui::diagnosis::verdict`]), the mismatch map
+//! ([`crate::gui::diagnosis::map`]), the candidates ([`crate::gui::diagnosis::candidates`]) and the before/after
+//! overlays ([`crate::gui::diagnosis::overlays`]).
 
-use super::load::Source;
+use crate::gui::diagnosis::load::Source;
 use crate::gui::app::TorsimApp;
 use egui::{RichText, Ui};
 
@@ -45,13 +45,13 @@ pub fn diagnosis_ui(app: &mut TorsimApp, ui: &mut Ui) {
                      it is now.",
                 );
             }
-            super::verdict::verdict_ui(app, &finished, ui);
+            crate::gui::diagnosis::verdict::verdict_ui(app, &finished, ui);
             ui.separator();
-            super::map::map_ui(&finished.report, ui);
+            crate::gui::diagnosis::map::map_ui(&finished.report, ui);
             ui.separator();
-            super::candidates::candidates_ui(&finished.report, ui);
+            crate::gui::diagnosis::candidates::candidates_ui(&finished.report, ui);
             ui.separator();
-            super::overlays::overlays_ui(&finished.report, ui);
+            crate::gui::diagnosis::overlays::overlays_ui(&finished.report, ui);
             if app.diagnosis.finished.is_none() {
                 app.diagnosis.finished = Some(finished);
             }

@@ -1,10 +1,10 @@
 //! What the diagnosis tab holds across frames: the recordings, the run in progress, the
 //! finished report, and the file threads (adding recordings, saving the report).
 
-use super::finished::Finished;
-use super::job::Job;
-use super::load::{self, Loaded, LoadedRecording, Source};
-use super::save::Saving;
+use crate::gui::diagnosis::finished::Finished;
+use crate::gui::diagnosis::job::Job;
+use crate::gui::diagnosis::load::{self, Loaded, LoadedRecording, Source};
+use crate::gui::diagnosis::save::Saving;
 use crate::gui::background::{self, Lost, Pending};
 use torsim::diagnose::{DiagnoseError, DiagnoseOptions, LabelledRecording};
 use torsim::model::Model;

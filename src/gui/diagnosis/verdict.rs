@@ -2,8 +2,8 @@
 //! held-out recordings, "Accept verdict" — the model with the verdict applied, through
 //! [`TorsimApp::commit`] so that it is one undo step — and "Save report…".
 
-use super::finished::{Finished, value_text};
-use super::save::Saving;
+use crate::gui::diagnosis::finished::{Finished, value_text};
+use crate::gui::diagnosis::save::Saving;
 use crate::gui::app::TorsimApp;
 use egui::{Color32, RichText, Ui};
 
@@ -59,7 +59,7 @@ pub fn verdict_ui(app: &mut TorsimApp, finished: &Finished, ui: &mut Ui) {
         RichText::new(format!(
             "{} recordings, noise {} rpm (median σ of the order amplitudes), {:.0} s.",
             r.recordings.len(),
-            super::finished::sig4(r.noise_rpm),
+            crate::gui::diagnosis::finished::sig4(r.noise_rpm),
             r.elapsed_s
         ))
         .weak(),

@@ -1,8 +1,8 @@
 //! Adding a connection of a chosen kind between two chosen nodes (or a node and the frame),
 //! with a unique name and starting values.
 
-use super::fields::EditCtx;
-use super::widgets;
+use crate::gui::editor::fields::EditCtx;
+use crate::gui::editor::widgets;
 use crate::gui::schematic::Selection;
 use egui::Ui;
 use torsim::model::{Connection, ConnectionKind, Gear, Model, RubberStage, RubberStiffness, Shaft};

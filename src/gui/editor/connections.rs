@@ -1,9 +1,9 @@
 //! Connections of every kind: name, ends, and the kind's values (shaft: see
-//! [`super::shaft`]; rubber: see [`super::rubber`]; gear: ratio, mesh stiffness, backlash); add a
+//! [`crate::gui::editor::shaft`]; rubber: see [`crate::gui::editor::rubber`]; gear: ratio, mesh stiffness, backlash); add a
 //! connection of a chosen kind between two chosen nodes; remove.
 
-use super::fields::{self, EditCtx, end_row};
-use super::widgets;
+use crate::gui::editor::fields::{self, EditCtx, end_row};
+use crate::gui::editor::widgets;
 use super::{element_frame, rubber, shaft};
 use crate::gui::schematic::Selection;
 use egui::{CollapsingHeader, Ui};
@@ -51,7 +51,7 @@ pub fn connections_ui(ui: &mut Ui, cx: &mut EditCtx, model: &mut Model) {
         cx.select = Some(None);
     }
     ui.separator();
-    super::add_connection::add_ui(ui, cx, model);
+    crate::gui::editor::add_connection::add_ui(ui, cx, model);
 }
 
 /// One connection's values; true when the user asked to remove it.

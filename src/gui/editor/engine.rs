@@ -3,8 +3,8 @@
 //! prescribed harmonics (node, order, amplitude, phase).
 
 use super::element_frame;
-use super::fields::{self, EditCtx, end_row};
-use super::widgets;
+use crate::gui::editor::fields::{self, EditCtx, end_row};
+use crate::gui::editor::widgets;
 use crate::gui::schematic::Selection;
 use egui::Ui;
 use torsim::model::{Engine, HarmonicAmplitude, Model, Pressure, PressureCurve};

@@ -1,8 +1,8 @@
 //! Checks (`[expect]`, run by `torsim check`): mode frequency windows, critical speed
 //! windows, and the orders that must cross no mode in the operating range.
 
-use super::fields::{self, EditCtx, end_row};
-use super::widgets;
+use crate::gui::editor::fields::{self, EditCtx, end_row};
+use crate::gui::editor::widgets;
 use egui::Ui;
 use torsim::model::{CriticalExpectation, ModeExpectation, Model};
 

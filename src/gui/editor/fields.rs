@@ -3,7 +3,7 @@
 //! progress; plus number formatting and the error messages under rows, on summaries and
 //! on section headers.
 
-use super::super::schematic::Selection;
+use crate::gui::schematic::Selection;
 use egui::{Color32, Response, RichText, Ui};
 use torsim::model::ModelError;
 

@@ -1,8 +1,8 @@
 //! Inertias: name (renaming a node renames every reference to it), moment of inertia and
 //! damping to the frame; add (joined by a shaft) and remove (with its connections).
 
-use super::fields::{self, EditCtx};
-use super::widgets;
+use crate::gui::editor::fields::{self, EditCtx};
+use crate::gui::editor::widgets;
 use crate::gui::schematic::Selection;
 use egui::{Shape, Ui};
 use torsim::model::{Connection, ConnectionKind, GROUND, Inertia, Model, Shaft};
@@ -181,14 +181,14 @@ fn add_ui(ui: &mut Ui, cx: &mut EditCtx, model: &mut Model) {
     if let Some(i) = anchor {
         let from = model.inertias[i].name.clone();
         model.connections.push(Connection {
-            name: super::add_connection::unique_connection_name(
+            name: crate::gui::editor::add_connection::unique_connection_name(
                 model,
                 &Connection::default_name(&from, &name),
             ),
             from,
             to: name,
             kind: ConnectionKind::Shaft(Shaft::massless(
-                super::add_connection::typical_shaft_stiffness(model),
+                crate::gui::editor::add_connection::typical_shaft_stiffness(model),
                 0.0,
             )),
         });

@@ -1,8 +1,8 @@
 //! The load (`[load]`): the node that holds the mean speed and its extra damping.
 
 use super::element_frame;
-use super::fields::{EditCtx, end_row};
-use super::widgets;
+use crate::gui::editor::fields::{EditCtx, end_row};
+use crate::gui::editor::widgets;
 use crate::gui::schematic::Selection;
 use egui::Ui;
 use torsim::model::{Load, Model};

@@ -21,8 +21,8 @@ mod rubber_polys;
 mod shaft;
 mod widgets;
 
-use super::app::TorsimApp;
-use super::schematic::{self, Selection};
+use crate::gui::app::TorsimApp;
+use crate::gui::schematic::{self, Selection};
 use egui::{CollapsingHeader, Ui};
 use fields::EditCtx;
 

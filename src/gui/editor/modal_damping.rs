@@ -2,8 +2,8 @@
 //! editable list; modes above it get none), on top of the dampers and rubber of the
 //! driveline (`torsim::physics::modal_damping`).
 
-use super::fields::{EditCtx, end_row};
-use super::widgets;
+use crate::gui::editor::fields::{EditCtx, end_row};
+use crate::gui::editor::widgets;
 use egui::Ui;
 use torsim::model::{ModalDamping, Model};
 

@@ -1,8 +1,8 @@
 //! Operation (`[operation]`): sweep and operating speed ranges, the orders to draw and sum
 //! (an editable list), and the named steady regimes (label, speed, engine load).
 
-use super::fields::{self, EditCtx, end_row};
-use super::widgets;
+use crate::gui::editor::fields::{self, EditCtx, end_row};
+use crate::gui::editor::widgets;
 use egui::Ui;
 use torsim::model::{Model, Regime, default_orders};
 

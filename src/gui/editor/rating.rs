@@ -3,8 +3,8 @@
 //! value, the ambient and the rubber's permissible temperature. A value that breaks a
 //! rule (T_Kmax below T_KN, say) is marked at its field like every other.
 
-use super::fields::{EditCtx, end_row};
-use super::widgets;
+use crate::gui::editor::fields::{EditCtx, end_row};
+use crate::gui::editor::widgets;
 use egui::Ui;
 use torsim::model::CouplingRating;
 

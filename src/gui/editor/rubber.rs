@@ -1,10 +1,10 @@
 //! A rubber coupling stage (seed 000): static stiffness given directly or assembled from
 //! its elements (eq. 12), relative damping ψ, temperature, the correction polynomials
-//! ([`super::rubber_polys`]) and the optional self-heating model.
+//! ([`crate::gui::editor::rubber_polys`]) and the optional self-heating model.
 
-use super::fields::{self, EditCtx, end_row};
-use super::rubber_polys::{self, POLYS};
-use super::widgets;
+use crate::gui::editor::fields::{self, EditCtx, end_row};
+use crate::gui::editor::rubber_polys::{self, POLYS};
+use crate::gui::editor::widgets;
 use egui::Ui;
 use torsim::model::{RubberElements, RubberStage, RubberStiffness, Thermal};
 
@@ -127,7 +127,7 @@ pub fn rubber_ui(ui: &mut Ui, cx: &mut EditCtx, key: &str, name: &str, r: &mut R
         rubber_polys::poly_ui(ui, cx, key, name, info, poly);
     }
     thermal_ui(ui, cx, key, name, &mut r.thermal);
-    super::rating::rating_ui(ui, cx, key, name, &mut r.rating);
+    crate::gui::editor::rating::rating_ui(ui, cx, key, name, &mut r.rating);
 }
 
 /// The other way of giving the same static stiffness: elements (8, 4 per side, 0.2 m

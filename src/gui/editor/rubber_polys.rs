@@ -2,8 +2,8 @@
 //! with seed 000's coefficients, edited coefficient by coefficient, with an optional
 //! validity range outside which the factor is held.
 
-use super::fields::{self, EditCtx, end_row};
-use super::widgets;
+use crate::gui::editor::fields::{self, EditCtx, end_row};
+use crate::gui::editor::widgets;
 use egui::Ui;
 use torsim::model::Poly;
 

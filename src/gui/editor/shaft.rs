@@ -1,8 +1,8 @@
 //! A shaft's values: stiffness, damping, and its own distributed inertia with the segments
 //! the time domain divides it into (automatic, or a number the user sets).
 
-use super::fields::{EditCtx, end_row};
-use super::widgets;
+use crate::gui::editor::fields::{EditCtx, end_row};
+use crate::gui::editor::widgets;
 use egui::Ui;
 use torsim::model::Shaft;
 

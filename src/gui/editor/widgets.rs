@@ -5,7 +5,7 @@
 //! why on hover and under its row. Each reports whether an edit is still in progress (a
 //! drag, or a field with keyboard focus), so that one gesture becomes one undo step.
 
-use super::fields::{EditCtx, error_color, format_value};
+use crate::gui::editor::fields::{EditCtx, error_color, format_value};
 use egui::{DragValue, Response, Stroke, TextEdit, Ui};
 
 /// Adds a widget, framed in red when the error is at `key`; marks it for the error.

@@ -3,7 +3,7 @@
 //! share of the strain energy. Drawn with the painter; repaints only while playing.
 
 use super::PlotState;
-use super::modes::driveline_order;
+use crate::gui::plots::modes::driveline_order;
 use egui::{Align2, Color32, FontId, Pos2, Sense, Stroke, Ui, pos2, vec2};
 use std::f64::consts::TAU;
 use torsim::modal::Mode;

@@ -1,10 +1,10 @@
 //! The Campbell diagram: every mode over speed, the order lines (major ones labelled),
 //! the crossings with a hover read-out, the operating range shaded. Clicking a crossing
 //! selects it: its mode shape and the forced response of its order show below
-//! ([`super::crossing`]), and the selection stays while edits keep that crossing.
+//! ([`crate::gui::plots::crossing`]), and the selection stays while edits keep that crossing.
 
-use super::series::{fmt, grid_125};
-use super::side_legend::{Entry, with_side_legend};
+use crate::gui::plots::series::{fmt, grid_125};
+use crate::gui::plots::side_legend::{Entry, with_side_legend};
 use super::{CrossingKey, PlotData, mode_color};
 use crate::gui::app::TorsimApp;
 use egui::{Color32, RichText, Ui};
@@ -135,7 +135,7 @@ pub fn campbell_ui(app: &mut TorsimApp, ui: &mut Ui) {
         diagram_ui(app, ui, &c.1, detail)
     });
     if let Some(x) = detail {
-        super::crossing::detail_ui(app, ui, &c, x);
+        crate::gui::plots::crossing::detail_ui(app, ui, &c, x);
     }
 }
 

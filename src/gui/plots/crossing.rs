@@ -2,8 +2,8 @@
 //! forced response of its order (IAS amplitude at the station where that order is largest
 //! at the crossing speed, or a chosen one) with a marker at the crossing speed.
 
-use super::modes::{main_element, mode_text, shape_plot};
-use super::series::{Series, grid_125, hover_label};
+use crate::gui::plots::modes::{main_element, mode_text, shape_plot};
+use crate::gui::plots::series::{Series, grid_125, hover_label};
 use crate::gui::app::TorsimApp;
 use egui::{Color32, Ui};
 use egui_plot::{Legend, Plot, VLine};

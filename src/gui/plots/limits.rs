@@ -3,8 +3,8 @@
 //! plot a line for every limit a rated stage exceeds and every node whose IAS leaves the
 //! linear model's range. The checks come from the simulation thread with the response.
 
-use super::quantity::Quantity;
-use super::series::Series;
+use crate::gui::plots::quantity::Quantity;
+use crate::gui::plots::series::Series;
 use crate::gui::app::TorsimApp;
 use egui::{Color32, RichText, Ui};
 use torsim::model::CouplingRating;

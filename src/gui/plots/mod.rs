@@ -21,7 +21,7 @@ mod time_series;
 pub use time_series::{nice_grid, nice_x_grid};
 mod traces;
 
-pub use super::export::PlotData;
+pub use crate::gui::export::PlotData;
 #[cfg(test)]
 pub use campbell::CAMPBELL_PLOT_ID;
 pub use campbell::crossing_at;
@@ -32,7 +32,7 @@ pub use quantity::Quantity;
 pub use quantity::matters;
 pub use series::{fmt, grid_125, tick_label};
 
-use super::app::{Tab, TorsimApp};
+use crate::gui::app::{Tab, TorsimApp};
 use egui::{Color32, Ui};
 
 const MODE_COLORS: [Color32; 10] = [
@@ -192,7 +192,7 @@ pub fn central_ui(app: &mut TorsimApp, ui: &mut Ui) {
         ] {
             ui.selectable_value(&mut app.tab, tab, label);
             ui.add(egui::Label::new(egui::RichText::new("?").weak()).sense(egui::Sense::hover()))
-                .on_hover_text(super::help::tab_help(tab));
+                .on_hover_text(crate::gui::help::tab_help(tab));
         }
         if app.tab == Tab::Diagnosis {
             return;
@@ -210,7 +210,7 @@ pub fn central_ui(app: &mut TorsimApp, ui: &mut Ui) {
             if button.clicked()
                 && let Some(data) = plot_data(app)
             {
-                super::export::export_csv(&mut app.exports, ui.ctx(), data);
+                crate::gui::export::export_csv(&mut app.exports, ui.ctx(), data);
             }
         });
     });
@@ -229,6 +229,6 @@ pub fn central_ui(app: &mut TorsimApp, ui: &mut Ui) {
         Tab::Modes => modes::modes_ui(app, ui),
         Tab::Response => response::response_ui(app, ui),
         Tab::Traces => traces::traces_ui(app, ui),
-        Tab::Diagnosis => super::diagnosis::diagnosis_ui(app, ui),
+        Tab::Diagnosis => crate::gui::diagnosis::diagnosis_ui(app, ui),
     }
 }

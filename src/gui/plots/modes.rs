@@ -1,7 +1,7 @@
 //! Mode shapes along the driveline, where each mode keeps its strain energy, and the
 //! animated view of the selected mode.
 
-use super::series::fmt;
+use crate::gui::plots::series::fmt;
 use super::{PlotData, mode_color};
 use crate::gui::app::TorsimApp;
 use egui::Ui;
@@ -295,7 +295,7 @@ pub fn modes_ui(app: &mut TorsimApp, ui: &mut Ui) {
         });
     });
     ui.separator();
-    super::animation::animation_ui(
+    crate::gui::plots::animation::animation_ui(
         &mut app.plots,
         ui,
         system,

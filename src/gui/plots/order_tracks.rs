@@ -3,8 +3,8 @@
 //! time, linked to the spectrogram above; the recording's dashed when one is open.
 
 use super::mode_color;
-use super::stft::{SCALE_W, SpeedAxis};
-use super::time_series::{self, Look, draw, time_link, visible_range};
+use crate::gui::plots::stft::{SCALE_W, SpeedAxis};
+use crate::gui::plots::time_series::{self, Look, draw, time_link, visible_range};
 use crate::gui::spectrogram::SpectrogramSet;
 use egui::Ui;
 use egui_plot::{AxisHints, HoverPosition, Legend, Plot};

@@ -3,7 +3,7 @@
 //! they are).
 
 use super::mode_color;
-use super::series::Series;
+use crate::gui::plots::series::Series;
 use egui::Color32;
 use torsim::response::Response;
 

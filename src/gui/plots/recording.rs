@@ -131,8 +131,8 @@ pub fn orders_ui(app: &mut TorsimApp, ui: &mut Ui) {
             let m = meas.and_then(|a| find(a, name));
             let mut plot = Plot::new(("orders", i))
                 .height(per)
-                .y_axis_min_width(super::time_series::Y_AXIS_W)
-                .y_grid_spacer(super::time_series::nice_grid())
+                .y_axis_min_width(crate::gui::plots::time_series::Y_AXIS_W)
+                .y_grid_spacer(crate::gui::plots::time_series::nice_grid())
                 .y_axis_formatter(super::tick_label)
                 .x_axis_formatter(super::tick_label)
                 .legend(Legend::default().follow_insertion_order(true).title(name))

@@ -1,11 +1,11 @@
 //! Forced response over speed: IAS amplitude per station, torque amplitude per connection
-//! or power loss per connection ([`super::quantity`]), with the operating range and the
+//! or power loss per connection ([`crate::gui::plots::quantity`]), with the operating range and the
 //! selected crossing marked.
 
 use super::PlotData;
-use super::quantity::{Quantity, response_series};
-use super::series::{Series, grid_125, hover_label, plot_data as series_data};
-use super::side_legend::{Entry, with_side_legend};
+use crate::gui::plots::quantity::{Quantity, response_series};
+use crate::gui::plots::series::{Series, grid_125, hover_label, plot_data as series_data};
+use crate::gui::plots::side_legend::{Entry, with_side_legend};
 use crate::gui::app::TorsimApp;
 use egui::{Color32, Ui};
 use egui_plot::{Plot, PlotBounds, Span, VLine};
@@ -67,7 +67,7 @@ fn current(app: &TorsimApp) -> Option<(String, Vec<Series>)> {
     if let Some(&connection) = r.connections.get(index)
         && quantity != Quantity::Ias
     {
-        series.extend(super::limits::limit_series(app, quantity, connection));
+        series.extend(crate::gui::plots::limits::limit_series(app, quantity, connection));
     }
     Some((title, series))
 }
@@ -138,7 +138,7 @@ pub fn response_ui(app: &mut TorsimApp, ui: &mut Ui) {
         return;
     };
     let zoom = selectors_ui(app, &r, ui);
-    super::limits::warnings_ui(app, ui);
+    crate::gui::plots::limits::warnings_ui(app, ui);
     let Some((_, series)) = current(app) else {
         return;
     };

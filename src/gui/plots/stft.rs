@@ -4,7 +4,7 @@
 //! and the model's natural frequencies over it, a colour scale in dB re 1 rpm; below it
 //! the order tracks of that station, the recording's dashed when one is open.
 
-use super::time_series::{self, time_link};
+use crate::gui::plots::time_series::{self, time_link};
 use super::{colour_scale, order_tracks};
 use crate::gui::app::TorsimApp;
 use crate::gui::spectrogram::SpectrogramSet;

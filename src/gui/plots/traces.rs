@@ -1,11 +1,11 @@
-//! The traces tab: what to run and its progress ([`super::run_controls`]), then one of
+//! The traces tab: what to run and its progress ([`crate::gui::plots::run_controls`]), then one of
 //! three views: time traces (this file: IAS per node, relative speed across each rubber
 //! stage, torque, power loss, rubber temperature — one plot per quantity, x axes and
 //! cursors linked, growing while the run streams in, a recording's stations overlaid),
-//! the run-up spectrogram ([`super::stft`]) or the orders ([`super::recording`]).
+//! the run-up spectrogram ([`crate::gui::plots::stft`]) or the orders ([`crate::gui::plots::recording`]).
 
-use super::side_legend::{Entry, with_side_legend};
-use super::time_series::{
+use crate::gui::plots::side_legend::{Entry, with_side_legend};
+use crate::gui::plots::time_series::{
     self, Look, Y_AXIS_W, draw, hover_label, nice_grid, nice_x_grid, time_link,
 };
 use super::{mode_color, recording, run_controls, stft};

@@ -1,8 +1,8 @@
-//! Painting the schematic's symbols where [`super::geometry`] put them.
+//! Painting the schematic's symbols where [`crate::gui::schematic::geometry`] put them.
 
 use super::Selection;
-use super::geometry::{Geometry, LinkShape};
-use super::symbols::{brake, engine, ground, speed_ratio_label, spring, wheel};
+use crate::gui::schematic::geometry::{Geometry, LinkShape};
+use crate::gui::schematic::symbols::{brake, engine, ground, speed_ratio_label, spring, wheel};
 use egui::{Align2, Color32, FontId, Painter, Rect, Shape, Stroke, StrokeKind, pos2, vec2};
 use torsim::model::{ConnectionKind, Model, RubberStiffness};
 

@@ -3,7 +3,7 @@
 //! under a point. Pure functions of the model, the layout and the rectangle.
 
 use super::Selection;
-use super::layout::{Cell, Layout};
+use crate::gui::schematic::layout::{Cell, Layout};
 use egui::{Pos2, Rect, Vec2, pos2, vec2};
 use torsim::model::{ConnectionKind, Model};
 

@@ -12,7 +12,7 @@
 //! crosses a node. Connections to `ground` end at a frame symbol in a cell of their own.
 //! Connections outside the tree (loops) are drawn as arcs.
 
-use super::tree::{Vertex, bfs, farthest, graph_of};
+use crate::gui::schematic::tree::{Vertex, bfs, farthest, graph_of};
 use std::collections::VecDeque;
 use torsim::model::{Model, graph};
 

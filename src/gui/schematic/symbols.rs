@@ -1,7 +1,7 @@
 //! The schematic's symbols: gear wheels with their speed ratio, springs, the frame, the
 //! engine's cylinders and the load's brake.
 
-use super::draw::Palette;
+use crate::gui::schematic::draw::Palette;
 use egui::{Align2, Color32, FontId, Painter, Pos2, Rect, Stroke, StrokeKind, pos2, vec2};
 use torsim::model::Model;
 

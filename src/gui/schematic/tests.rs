@@ -3,9 +3,9 @@
 //! another, wheels in proportion to the ratio, and each element found under its point.
 
 use super::Selection;
-use super::geometry;
-use super::layout;
-use super::symbols::speed_ratio_label;
+use crate::gui::schematic::geometry;
+use crate::gui::schematic::layout;
+use crate::gui::schematic::symbols::speed_ratio_label;
 use egui::{Pos2, Rect, pos2};
 use torsim::model::{Model, parse_model};
 
