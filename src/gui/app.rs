@@ -2,18 +2,19 @@
 //! Edits go through [`TorsimApp::commit`], which keeps undo history, marks the model
 //! unsaved and sends a new request to the simulation thread.
 
-use crate::gui::recording_job::RecordingView;
-use crate::gui::schematic::{self, Selection};
-use crate::gui::trace_data::LiveTrace;
-use crate::gui::trace_job::RunAnalysis;
+use super::views::{editor, plots};
+use super::{export, files, recordings};
+use crate::gui::session::recording_job::RecordingView;
+use crate::gui::session::trace_data::LiveTrace;
+use crate::gui::session::trace_job::RunAnalysis;
+use crate::gui::session::worker::{Modal, PanelError, Payload, SimResult, Worker};
 use crate::gui::trace_state::{self, TraceState};
-use crate::gui::worker::{SimResult, Worker};
-use super::{editor, export, files, plots, recordings};
+use crate::gui::views::schematic::{self, Selection};
 use std::path::PathBuf;
 use std::sync::Arc;
-use torsim::modal::{Campbell, DampedMode};
+
 use torsim::model::{Model, ModelError, validate};
-use torsim::physics::System;
+
 use torsim::response::Response;
 use torsim::transient::Simulation;
 
@@ -39,13 +40,13 @@ pub struct Results {
     /// Generation of the last request.
     pub generation: u64,
     /// Modes, Campbell diagram and damped modes.
-    pub campbell: Option<Arc<(System, Campbell, Vec<DampedMode>)>>,
+    pub campbell: Option<Arc<Modal>>,
     /// The request the Campbell diagram on screen answers.
     pub campbell_generation: u64,
     /// Forced response.
     pub response: Option<Arc<Response>>,
     /// The coupling ratings on that response, and the linear range.
-    pub ratings: Option<Arc<crate::gui::worker::RatingsResult>>,
+    pub ratings: Option<Arc<crate::gui::session::worker::RatingsResult>>,
     /// The engine's working cycle at full load.
     pub engine_cycle: Option<Arc<torsim::physics::engine_cycle::EngineCycle>>,
     /// The finished time run.
@@ -63,7 +64,7 @@ pub struct Results {
     /// Generation of the last time run cancelled.
     pub trace_cancelled: Option<u64>,
     /// Errors by panel.
-    pub errors: Vec<(&'static str, String)>,
+    pub errors: Vec<PanelError>,
 }
 
 /// The application.
@@ -121,7 +122,7 @@ pub struct TorsimApp {
     /// A save or export that would replace an open file, waiting for the user's answer.
     pub confirm: Option<crate::gui::overwrite::Confirm>,
     /// The diagnosis tab: recordings, the run, the report.
-    pub diagnosis: crate::gui::diagnosis::DiagnosisState,
+    pub diagnosis: crate::gui::views::diagnosis::DiagnosisState,
     /// The title last sent to the window (sent again only when it changes).
     shown_title: Option<String>,
     /// Edit-to-plot latency, logged when asked for ([`crate::gui::latency`]).
@@ -259,26 +260,34 @@ impl TorsimApp {
 
     /// Takes every result the worker sent; stale ones are dropped.
     pub fn receive(&mut self) {
-        while let Ok(r) = self.worker.results.try_recv() {
-            let current = self.results.generation;
-            match r {
-                SimResult::Campbell(g, c) if g == current => {
+        while let Ok(SimResult {
+            generation,
+            payload,
+        }) = self.worker.results.try_recv()
+        {
+            if let Payload::Cancelled = payload {
+                self.results.trace_cancelled = Some(generation);
+                continue;
+            }
+            if generation != self.results.generation {
+                continue;
+            }
+            match payload {
+                Payload::Modal(c) => {
                     self.results.campbell = Some(c);
-                    self.results.campbell_generation = g;
-                    self.latency.arrived(g);
+                    self.results.campbell_generation = generation;
+                    self.latency.arrived(generation);
                 }
-                SimResult::Response(g, r) if g == current => self.results.response = Some(r),
-                SimResult::Ratings(g, r) if g == current => self.results.ratings = Some(r),
-                SimResult::EngineCycle(g, c) if g == current => self.results.engine_cycle = Some(c),
-                SimResult::Trace(g, t) if g == current => {
+                Payload::Response(r) => self.results.response = Some(r),
+                Payload::Ratings(r) => self.results.ratings = Some(r),
+                Payload::EngineCycle(c) => self.results.engine_cycle = Some(c),
+                Payload::Trace(t) => {
                     self.results.trace = Some(t);
                     self.results.trace_progress = 1.0;
                 }
-                SimResult::Progress(g, p) if g == current => self.results.trace_progress = p,
-                SimResult::Error(g, panel, e) if g == current => {
-                    self.results.errors.push((panel, e))
-                }
-                other => trace_state::receive(self, other),
+                Payload::Progress(p) => self.results.trace_progress = p,
+                Payload::Error(e) => self.results.errors.push(e),
+                other => trace_state::receive(self, generation, other),
             }
         }
     }
@@ -288,8 +297,8 @@ impl TorsimApp {
         self.results
             .errors
             .iter()
-            .find(|(p, _)| *p == panel)
-            .map(|(_, e)| e.as_str())
+            .find(|e| e.panel == panel)
+            .map(|e| e.message.as_str())
     }
 
     /// The window title: model name, file, unsaved mark.

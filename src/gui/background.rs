@@ -5,7 +5,7 @@
 //!
 //! [`spawn`] is for work with one answer (a dialog, a write); [`spawn_stream`] for work
 //! that reports as it goes (the diagnosis' progress, then its report). The simulation
-//! thread ([`crate::gui::worker`]) is long-lived and has its own request queue.
+//! thread ([`crate::gui::session::worker`]) is long-lived and has its own request queue.
 
 use crossbeam_channel::{Receiver, Sender, TryRecvError, bounded, unbounded};
 

@@ -83,7 +83,7 @@ pub fn replace_model(app: &mut TorsimApp, model: torsim::model::Model, path: Opt
     app.selected = None;
     app.selected_mode = 0;
     app.stations.clear();
-    app.plots = crate::gui::plots::PlotState {
+    app.plots = crate::gui::views::plots::PlotState {
         model_epoch: app.plots.model_epoch + 1,
         amplitude_deg: app.plots.amplitude_deg,
         ..Default::default()
@@ -167,7 +167,7 @@ pub fn menu_ui(app: &mut TorsimApp, ui: &mut egui::Ui) {
             }
             ui.separator();
             if ui.button("Export plot as CSV…").clicked() {
-                match crate::gui::plots::plot_data(app) {
+                match crate::gui::views::plots::plot_data(app) {
                     Some(data) => crate::gui::export::export_csv(&mut app.exports, ui.ctx(), data),
                     None => app.status = "nothing to export yet".into(),
                 }

@@ -1,70 +1,30 @@
-//! The interactive simulator (eframe/egui): the driveline panel ([`editor`]), the plots
-//! ([`plots`]), files and menus ([`files`]), and the simulation thread ([`worker`]) that
-//! does all the computing off the GUI thread. Plot data and the window are exported by
-//! [`export`].
+//! The interactive simulator (eframe/egui), in three parts a newcomer can tell by folder:
+//! - this folder: the GUI thread's app ([`app`]) and what it does besides drawing: files
+//!   and menus ([`files`]), asking before edits go ([`unsaved`]), autosave and restore
+//!   ([`recovery`], [`startup`]), exports ([`export`], [`overwrite`]), the recording a
+//!   user opens ([`recordings`]), the time run's settings ([`trace_state`]), the one
+//!   helper that starts background threads ([`background`]) and latency logging;
+//! - [`session`]: what runs off the GUI thread without egui: the simulation thread and
+//!   its jobs, the diagnosis thread, and their result types;
+//! - [`views`]: what is drawn: the driveline panel, the schematic, the plots of each tab
+//!   and the diagnosis tab.
 
 pub mod app;
 pub mod background;
-pub mod decimate;
-pub mod diagnosis;
-pub mod editor;
 pub mod export;
 pub mod files;
-pub mod help;
 pub mod latency;
 pub mod overwrite;
-pub mod plots;
-pub mod recording_job;
 pub mod recordings;
 pub mod recovery;
-pub mod schematic;
-pub mod spectrogram;
+pub mod session;
 pub mod startup;
-pub mod trace_data;
-pub mod trace_job;
-pub mod trace_series;
 pub mod trace_state;
 pub mod unsaved;
-pub mod worker;
+pub mod views;
 
 #[cfg(test)]
 mod tests;
-#[cfg(test)]
-mod tests_diagnosis;
-#[cfg(test)]
-mod tests_diagnosis_run;
-#[cfg(test)]
-mod tests_edit;
-#[cfg(test)]
-mod tests_edit_cases;
-#[cfg(test)]
-mod tests_edit_structure;
-#[cfg(test)]
-mod tests_idle;
-#[cfg(test)]
-mod tests_layout;
-#[cfg(test)]
-mod tests_modal_damping;
-#[cfg(test)]
-mod tests_overwrite;
-#[cfg(test)]
-mod tests_plots;
-#[cfg(test)]
-mod tests_ratings;
-#[cfg(test)]
-mod tests_recovery;
-#[cfg(test)]
-mod tests_shaft;
-#[cfg(test)]
-mod tests_snapshots;
-#[cfg(test)]
-mod tests_support;
-#[cfg(test)]
-mod tests_teaching;
-#[cfg(test)]
-mod tests_traces;
-#[cfg(test)]
-mod tests_unsaved;
 
 use torsim::model::{ModelError, PRESET_PREFIX};
 

@@ -91,10 +91,11 @@ pub fn perform(app: &mut TorsimApp, ctx: &egui::Context, write: PendingWrite) {
     match write {
         PendingWrite::Model(path) => crate::gui::files::save_to(app, path),
         PendingWrite::PlotCsv(path, data) => {
-            app.status = match torsim::files::write_atomic(&path, crate::gui::export::csv_text(&data)) {
-                Ok(()) => format!("exported the plot data to {}", path.display()),
-                Err(e) => format!("could not write {}: {e}", path.display()),
-            }
+            app.status =
+                match torsim::files::write_atomic(&path, crate::gui::export::csv_text(&data)) {
+                    Ok(()) => format!("exported the plot data to {}", path.display()),
+                    Err(e) => format!("could not write {}: {e}", path.display()),
+                }
         }
         PendingWrite::Png(path) => crate::gui::export::screenshot_to(&mut app.exports, ctx, path),
         PendingWrite::Report {
@@ -103,7 +104,7 @@ pub fn perform(app: &mut TorsimApp, ctx: &egui::Context, write: PendingWrite) {
             model_name,
         } => {
             app.diagnosis.message =
-                match crate::gui::diagnosis::save::write_page(&path, &report, &model_name) {
+                match crate::gui::views::diagnosis::save::write_page(&path, &report, &model_name) {
                     Ok(path) => format!("saved the report to {}", path.display()),
                     Err(e) => e,
                 }

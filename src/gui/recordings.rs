@@ -1,6 +1,6 @@
 //! Recordings in the window: File → Open recording… asks for a CSV on a background thread
 //! (rfd, so the window never freezes); the path goes to the simulation thread with the
-//! next request, which reads and analyses it ([`crate::gui::recording_job`]) and simulates its
+//! next request, which reads and analyses it ([`crate::gui::session::recording_job`]) and simulates its
 //! regime; the traces tab overlays the two. Its stations are marked in the schematic.
 
 use crate::gui::app::{Tab, TorsimApp};

@@ -3,7 +3,7 @@
 //! keeps editing), off the GUI thread, and the file is removed as soon as the model is
 //! clean again (saved, another model shown, the edits discarded, the window closed after
 //! asking). A window that ends any other way — a crash, a kill, a power cut — leaves its
-//! file behind; the next start restores it ([`opening`]), or offers it in the File menu
+//! file behind; the next start restores it ([`crate::gui::startup`]), or offers it in the File menu
 //! when a model was named on the command line.
 //!
 //! Each window writes its own file, `<pid>.toml` in [`recovery_dir`], so two windows

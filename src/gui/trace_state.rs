@@ -5,8 +5,8 @@
 
 use crate::gui::app::TorsimApp;
 use crate::gui::background::Pending;
-use crate::gui::trace_data::{LiveTrace, TraceSpec};
-use crate::gui::worker::SimResult;
+use crate::gui::session::trace_data::{LiveTrace, TraceSpec};
+use crate::gui::session::worker::Payload;
 use std::path::PathBuf;
 use torsim::model::Model;
 use torsim::recording::Run;
@@ -129,39 +129,37 @@ impl TraceState {
 
 /// What a request's time run will be, for a person, until the worker says.
 pub fn pending_label(spec: &TraceSpec) -> String {
-    match crate::gui::trace_job::resolve(spec, None) {
-        Ok(kind) => crate::gui::trace_job::describe(kind),
+    match crate::gui::session::trace_job::resolve(spec, None) {
+        Ok(kind) => crate::gui::session::trace_job::describe(kind),
         Err(_) => "the recording's regime (reading the recording)".into(),
     }
 }
 
-/// Takes a time-run message of the current generation (others are dropped).
-pub fn receive(app: &mut TorsimApp, message: SimResult) {
-    let current = app.results.generation;
+/// Takes a time-run message of the current generation `g` (the app drops the others).
+pub fn receive(app: &mut TorsimApp, g: u64, message: Payload) {
     let r = &mut app.results;
     match message {
-        SimResult::TraceRunning(g, label) if g == current => {
+        Payload::TraceRunning(label) => {
             r.trace_label = label;
             r.trace_progress = 0.0;
         }
-        SimResult::TraceStarted(g, layout) if g == current => {
+        Payload::TraceStarted(layout) => {
             r.live = Some(LiveTrace::new(g, layout));
             r.trace_analysis = None;
         }
-        SimResult::TraceChunk(g, chunk) if g == current => {
+        Payload::TraceChunk(chunk) => {
             if let Some(live) = r.live.as_mut().filter(|l| l.generation == g) {
                 live.append(&chunk);
             }
         }
-        SimResult::TraceAnalysis(g, a) if g == current => r.trace_analysis = Some(a),
-        SimResult::Recording(g, view) if g == current => {
+        Payload::TraceAnalysis(a) => r.trace_analysis = Some(a),
+        Payload::Recording(view) => {
             if r.recording.is_none() {
                 app.status = format!("opened recording {}", view.file);
             }
             app.stations = view.stations();
             r.recording = Some(view);
         }
-        SimResult::Cancelled(g) => r.trace_cancelled = Some(g),
         _ => {}
     }
 }

@@ -1,0 +1,202 @@
+//! A rubber coupling stage (seed 000): static stiffness given directly or assembled from
+//! its elements (eq. 12), relative damping ψ, temperature, the correction polynomials
+//! ([`crate::gui::views::editor::rubber_polys`]) and the optional self-heating model.
+
+use crate::gui::views::editor::fields::{self, EditCtx, end_row};
+use crate::gui::views::editor::rubber_polys::{self, POLYS};
+use crate::gui::views::editor::widgets;
+use egui::Ui;
+use torsim::model::{RubberElements, RubberStage, RubberStiffness, Thermal};
+
+/// The rubber stage's rows in its connection's grid.
+pub fn rubber_ui(ui: &mut Ui, cx: &mut EditCtx, key: &str, name: &str, r: &mut RubberStage) {
+    let k = |sub: &str| format!("{key}.{sub}");
+    ui.label("stiffness from");
+    ui.horizontal(|ui| {
+        let mut by_elements = matches!(r.stiffness, RubberStiffness::Elements(_));
+        let a = ui.radio_value(&mut by_elements, false, "value");
+        let b = ui.radio_value(&mut by_elements, true, "elements");
+        cx.track(&a);
+        cx.track(&b);
+        if a.changed() || b.changed() {
+            r.stiffness = converted(&r.stiffness, by_elements);
+        }
+    });
+    end_row(ui, cx);
+    match &mut r.stiffness {
+        RubberStiffness::Direct(s) => {
+            ui.label("static stiffness").on_hover_text("at 25 °C");
+            widgets::number(
+                ui,
+                cx,
+                &k("stiffness"),
+                &format!("stiffness {name}"),
+                s,
+                "N·m/rad",
+                1e3,
+            );
+            end_row(ui, cx);
+        }
+        RubberStiffness::Elements(e) => {
+            ui.label("elements");
+            widgets::count(
+                ui,
+                cx,
+                &k("elements.count"),
+                &format!("elements {name}"),
+                &mut e.count,
+            );
+            end_row(ui, cx);
+            ui.label("per side");
+            widgets::count(
+                ui,
+                cx,
+                &k("elements.per_side"),
+                &format!("elements per side {name}"),
+                &mut e.per_side,
+            );
+            end_row(ui, cx);
+            ui.label("pitch diameter");
+            widgets::number(
+                ui,
+                cx,
+                &k("elements.pitch_diameter"),
+                &format!("pitch diameter {name}"),
+                &mut e.pitch_diameter_m,
+                "m",
+                0.1,
+            );
+            end_row(ui, cx);
+            ui.label("radial stiffness")
+                .on_hover_text("c_R0 of one unloaded element");
+            widgets::number(
+                ui,
+                cx,
+                &k("elements.radial_stiffness"),
+                &format!("element radial stiffness {name}"),
+                &mut e.radial_stiffness_n_per_m,
+                "N/m",
+                1e5,
+            );
+            end_row(ui, cx);
+            ui.label("");
+            ui.weak(format!(
+                "= {} N·m/rad static at 25 °C (eq. 12)",
+                fields::format_sig(e.torsional_stiffness_nm_per_rad(), 4)
+            ));
+            end_row(ui, cx);
+        }
+    }
+    ui.label("ψ relative damping")
+        .on_hover_text("DIN 740; loss factor ξ = ψ/2π");
+    ui.horizontal(|ui| {
+        widgets::number(
+            ui,
+            cx,
+            &k("psi"),
+            &format!("psi {name}"),
+            &mut r.psi,
+            "",
+            0.1,
+        );
+        ui.weak(format!(
+            "ξ = {}",
+            fields::format_sig(r.psi / std::f64::consts::TAU, 3)
+        ));
+    });
+    end_row(ui, cx);
+    ui.label("temperature")
+        .on_hover_text("of the rubber; with self-heating, at the start");
+    widgets::number(
+        ui,
+        cx,
+        &k("temperature_c"),
+        &format!("temperature {name}"),
+        &mut r.temperature_c,
+        "°C",
+        10.0,
+    );
+    end_row(ui, cx);
+    let polys = [
+        &mut r.amplitude_poly,
+        &mut r.frequency_poly,
+        &mut r.temperature_stiffness_poly,
+        &mut r.temperature_damping_poly,
+    ];
+    for (info, poly) in POLYS.iter().zip(polys) {
+        rubber_polys::poly_ui(ui, cx, key, name, info, poly);
+    }
+    thermal_ui(ui, cx, key, name, &mut r.thermal);
+    crate::gui::views::editor::rating::rating_ui(ui, cx, key, name, &mut r.rating);
+}
+
+/// The other way of giving the same static stiffness: elements (8, 4 per side, 0.2 m
+/// pitch, radial stiffness solved from eq. 12) or the value they give.
+fn converted(s: &RubberStiffness, by_elements: bool) -> RubberStiffness {
+    match (s, by_elements) {
+        (RubberStiffness::Direct(k), true) => {
+            let (count, per_side, d) = (8u32, 4u32, 0.2);
+            let geometry =
+                (d / 2.0) * (d / 2.0) * f64::from(per_side * (count - per_side)) / f64::from(count);
+            RubberStiffness::Elements(RubberElements {
+                count,
+                per_side,
+                pitch_diameter_m: d,
+                radial_stiffness_n_per_m: k / geometry,
+            })
+        }
+        (RubberStiffness::Elements(e), false) => {
+            RubberStiffness::Direct(e.torsional_stiffness_nm_per_rad())
+        }
+        _ => s.clone(),
+    }
+}
+
+fn thermal_ui(ui: &mut Ui, cx: &mut EditCtx, key: &str, name: &str, thermal: &mut Option<Thermal>) {
+    let k = |sub: &str| format!("{key}.thermal.{sub}");
+    let mut on = thermal.is_some();
+    let r = ui
+        .checkbox(&mut on, "self-heating")
+        .on_hover_text("time domain: the rubber warms by its own power loss and cools to ambient");
+    cx.track(&r);
+    if on != thermal.is_some() {
+        // A start: about 2 kg of rubber (1.7 kJ/(kg·K)) losing 10 W per kelvin, in 25 °C air.
+        *thermal = on.then_some(Thermal {
+            capacity_j_per_k: 3400.0,
+            conductance_w_per_k: 10.0,
+            ambient_c: 25.0,
+        });
+    }
+    ui.label("");
+    end_row(ui, cx);
+    let Some(t) = thermal else { return };
+    for (label, sub, value, unit, typical) in [
+        (
+            "   heat capacity",
+            "capacity_j_per_k",
+            &mut t.capacity_j_per_k,
+            "J/K",
+            1000.0,
+        ),
+        (
+            "   conductance",
+            "conductance_w_per_k",
+            &mut t.conductance_w_per_k,
+            "W/K",
+            1.0,
+        ),
+        ("   ambient", "ambient_c", &mut t.ambient_c, "°C", 10.0),
+    ] {
+        ui.label(label);
+        widgets::number(
+            ui,
+            cx,
+            &k(sub),
+            &format!("{sub} {name}"),
+            value,
+            unit,
+            typical,
+        );
+        end_row(ui, cx);
+    }
+}
