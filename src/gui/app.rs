@@ -85,6 +85,8 @@ pub struct TorsimApp {
     pub invalid_error: Option<ModelError>,
     /// The element selected in the schematic or the editor.
     pub selected: Option<Selection>,
+    /// What the views asked for this frame, applied at its end ([`Self::apply_commands`]).
+    pub commands: crate::gui::command::Commands,
     /// Nodes with a measurement station (from loaded recordings), marked in the schematic.
     pub stations: Vec<String>,
     /// The model before the edit gesture in progress (a drag, or typing in a field that
@@ -143,6 +145,7 @@ impl TorsimApp {
             invalid: None,
             invalid_error: None,
             selected: None,
+            commands: Default::default(),
             stations: Vec::new(),
             gesture_start: None,
             results: Results::default(),
@@ -201,7 +204,9 @@ impl TorsimApp {
     }
 
     /// Records a finished edit: `before` (or the start of the gesture it ends) goes on the
-    /// undo stack, the model is unsaved, results are requested again.
+    /// undo stack, the model is unsaved, results are requested again. The tests' shortcut
+    /// for an edit; the views send [`crate::gui::command::Command::Edit`].
+    #[cfg(test)]
     pub fn commit(&mut self, before: Model) {
         self.commit_live(before, false);
     }
@@ -225,6 +230,11 @@ impl TorsimApp {
         if !in_progress {
             self.end_gesture();
         }
+    }
+
+    /// True while an edit gesture (a drag, typing in a field) is open.
+    pub fn gesture_open(&self) -> bool {
+        self.gesture_start.is_some()
     }
 
     /// Closes the gesture in progress, if any: one undo step when it changed the model.
@@ -255,6 +265,31 @@ impl TorsimApp {
             self.dirty = true;
             self.revision += 1;
             self.request();
+        }
+    }
+
+    /// Applies what the views asked for this frame, in order; the window draws the
+    /// outcome in the next frame, which this asks for.
+    pub fn apply_commands(&mut self, ctx: &egui::Context) {
+        use crate::gui::command::Command;
+        let commands = self.commands.take();
+        if !commands.is_empty() {
+            ctx.request_repaint();
+        }
+        for command in commands {
+            match command {
+                Command::Edit { model, in_progress } => {
+                    let before = std::mem::replace(&mut self.model, *model);
+                    self.commit_live(before, in_progress);
+                }
+                Command::EndGesture => self.end_gesture(),
+                Command::Undo => self.undo(),
+                Command::Redo => self.redo(),
+                Command::Select(selection) => self.selected = selection,
+                Command::ShowTab(tab) => self.tab = tab,
+                Command::Rerun => self.request(),
+                Command::CancelTrace => self.cancel_trace(),
+            }
         }
     }
 
@@ -405,6 +440,7 @@ impl eframe::App for TorsimApp {
             .default_size(360.0)
             .show(ui, |ui| editor::driveline_ui(self, ui));
         egui::CentralPanel::default().show(ui, |ui| plots::central_ui(self, ui));
+        self.apply_commands(ui.ctx());
         if self.tab == Tab::Campbell && self.results.campbell.is_some() {
             self.latency.drawn(self.results.campbell_generation);
         }

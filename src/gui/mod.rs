@@ -11,6 +11,7 @@
 
 pub mod app;
 pub mod background;
+pub mod command;
 pub mod export;
 pub mod files;
 pub mod latency;

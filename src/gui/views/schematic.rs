@@ -15,6 +15,7 @@ mod tests;
 mod tree;
 
 use crate::gui::app::TorsimApp;
+use crate::gui::command::Command;
 use crate::gui::views::editor::fields::format_value as num;
 use egui::{Sense, Ui};
 use torsim::model::{ConnectionKind, ModalDamping, Model, RubberStiffness};
@@ -77,7 +78,7 @@ pub fn schematic_ui(app: &mut TorsimApp, ui: &mut Ui) {
             if response.clicked()
                 && let Some(pos) = response.interact_pointer_pos()
             {
-                app.selected = geometry.hit(pos);
+                app.commands.push(Command::Select(geometry.hit(pos)));
                 ui.data_mut(|d| d.insert_temp(reveal_id(), REVEAL_FRAMES));
             }
             if let Some(sel) = hovered {

@@ -3,6 +3,7 @@
 //! [`TorsimApp::commit`] so that it is one undo step — and "Save report…".
 
 use crate::gui::app::TorsimApp;
+use crate::gui::command::Command;
 use crate::gui::session::diagnosis::finished::{Finished, value_text};
 use crate::gui::views::diagnosis::save::Saving;
 use egui::{Color32, RichText, Ui};
@@ -113,8 +114,10 @@ fn accept_ui(app: &mut TorsimApp, finished: &Finished, ui: &mut Ui) {
     if button.clicked()
         && let Some(after) = finished.change()
     {
-        let before = std::mem::replace(&mut app.model, after.clone());
-        app.commit(before);
+        app.commands.push(Command::Edit {
+            model: Box::new(after.clone()),
+            in_progress: false,
+        });
         app.status = format!("accepted the diagnosis: {}", finished.report.verdict.effect);
     }
     if let Some(why) = why {

@@ -3,7 +3,7 @@
 //! [`fields`]); the status bar keeps the message and the last good results stay on screen.
 //! The element selected in the schematic opens here and is scrolled to; touching an
 //! element here selects it there. A drag or a typed edit is one undo step
-//! ([`TorsimApp::commit_live`]).
+//! ([`Command::Edit`], applied by the app at the end of the frame).
 
 mod add_connection;
 mod connections;
@@ -22,6 +22,7 @@ mod shaft;
 mod widgets;
 
 use crate::gui::app::TorsimApp;
+use crate::gui::command::Command;
 use crate::gui::views::schematic::{self, Selection};
 use egui::{CollapsingHeader, Ui};
 use fields::EditCtx;
@@ -39,7 +40,8 @@ fn last_error_id() -> egui::Id {
 /// undo step when the gesture ends.
 pub fn driveline_ui(app: &mut TorsimApp, ui: &mut Ui) {
     undo_bar_ui(app, ui);
-    let before = app.model.clone();
+    // The panel edits a draft; the edit goes to the app as a command.
+    let mut draft = app.model.clone();
     // Frames left to open and scroll to the element chosen in the schematic (a header
     // opening shows its body from the next frame).
     let reveal_frames = ui
@@ -68,10 +70,7 @@ pub fn driveline_ui(app: &mut TorsimApp, ui: &mut Ui) {
             ui.horizontal(|ui| {
                 let l = ui.label("Model name");
                 let r = ui
-                    .add(
-                        egui::TextEdit::singleline(&mut app.model.name)
-                            .desired_width(f32::INFINITY),
-                    )
+                    .add(egui::TextEdit::singleline(&mut draft.name).desired_width(f32::INFINITY))
                     .labelled_by(l.id);
                 cx.track(&r);
             });
@@ -122,19 +121,19 @@ pub fn driveline_ui(app: &mut TorsimApp, ui: &mut Ui) {
                     .default_open(default_open)
                     .open(open_now.then_some(true))
                     .show(ui, |ui| match k {
-                        0 => inertias::inertias_ui(ui, &mut cx, &mut app.model, &mut app.stations),
-                        1 => connections::connections_ui(ui, &mut cx, &mut app.model),
+                        0 => inertias::inertias_ui(ui, &mut cx, &mut draft, &mut app.stations),
+                        1 => connections::connections_ui(ui, &mut cx, &mut draft),
                         2 => {
-                            engine::engine_ui(ui, &mut cx, &mut app.model);
+                            engine::engine_ui(ui, &mut cx, &mut draft);
                             let cycle = app.results.engine_cycle.clone();
-                            if app.model.engine.is_some() {
+                            if draft.engine.is_some() {
                                 engine_cycle::cycle_ui(ui, cycle.as_deref());
                             }
                         }
-                        3 => load::load_ui(ui, &mut cx, &mut app.model),
-                        4 => modal_damping::modal_damping_ui(ui, &mut cx, &mut app.model),
-                        5 => operation::operation_ui(ui, &mut cx, &mut app.model),
-                        _ => expect::expect_ui(ui, &mut cx, &mut app.model),
+                        3 => load::load_ui(ui, &mut cx, &mut draft),
+                        4 => modal_damping::modal_damping_ui(ui, &mut cx, &mut draft),
+                        5 => operation::operation_ui(ui, &mut cx, &mut draft),
+                        _ => expect::expect_ui(ui, &mut cx, &mut draft),
                     });
                 if let Some(m) = message {
                     if let Some(e) = &cx.error
@@ -147,7 +146,7 @@ pub fn driveline_ui(app: &mut TorsimApp, ui: &mut Ui) {
             }
         });
     if let Some(sel) = cx.select {
-        app.selected = sel;
+        app.commands.push(Command::Select(sel));
     }
     ui.data_mut(|d| {
         if cx.revealed || reveal_frames <= 1 {
@@ -157,10 +156,13 @@ pub fn driveline_ui(app: &mut TorsimApp, ui: &mut Ui) {
         }
     });
     ui.data_mut(|d| d.insert_temp(shown_id(), cx.shown.clone()));
-    if cx.active {
-        app.commit_live(before, true);
-    } else {
-        app.commit(before);
+    if draft != app.model {
+        app.commands.push(Command::Edit {
+            model: Box::new(draft),
+            in_progress: cx.active,
+        });
+    } else if !cx.active && app.gesture_open() {
+        app.commands.push(Command::EndGesture);
     }
 }
 
@@ -178,10 +180,10 @@ fn undo_bar_ui(app: &mut TorsimApp, ui: &mut Ui) {
                 .on_hover_text(format!("Ctrl+Z — {} step(s) to undo", app.undo.len()))
                 .on_disabled_hover_text("nothing to undo");
             if undo.clicked() {
-                app.undo();
+                app.commands.push(Command::Undo);
             }
             if redo.clicked() {
-                app.redo();
+                app.commands.push(Command::Redo);
             }
         });
     });

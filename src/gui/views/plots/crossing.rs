@@ -3,6 +3,7 @@
 //! at the crossing speed, or a chosen one) with a marker at the crossing speed.
 
 use crate::gui::app::TorsimApp;
+use crate::gui::command::Command;
 use crate::gui::session::worker::Modal;
 use crate::gui::views::plots::modes::{main_element, mode_text, shape_plot};
 use crate::gui::views::plots::series::{Series, grid_125, hover_label};
@@ -61,8 +62,9 @@ pub fn crossing_response(
 pub fn simulate_at(app: &mut TorsimApp, speed_rpm: f64) {
     app.trace_speed_rpm = speed_rpm;
     app.traces.mode = crate::gui::trace_state::TraceMode::Steady;
-    app.tab = crate::gui::app::Tab::Traces;
-    app.request();
+    app.commands
+        .push(Command::ShowTab(crate::gui::app::Tab::Traces));
+    app.commands.push(Command::Rerun);
 }
 
 /// The shape and response of crossing `x` side by side.

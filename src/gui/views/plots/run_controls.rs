@@ -3,6 +3,7 @@
 //! the view selector.
 
 use crate::gui::app::TorsimApp;
+use crate::gui::command::Command;
 use crate::gui::recordings;
 use crate::gui::trace_state::{TraceMode, TraceView};
 use egui::{DragValue, Ui};
@@ -79,7 +80,7 @@ pub fn controls_ui(app: &mut TorsimApp, ui: &mut Ui) {
         }
     });
     if changed {
-        app.request();
+        app.commands.push(Command::Rerun);
     }
 }
 
@@ -124,12 +125,12 @@ pub fn status_ui(app: &mut TorsimApp, ui: &mut Ui) {
                     .text(format!("{label}: {pct:.0} %{stage}")),
             );
             if ui.button("Cancel").clicked() {
-                app.cancel_trace();
+                app.commands.push(Command::CancelTrace);
             }
         } else if cancelled {
             ui.label(format!("{label}: cancelled at {pct:.0} %"));
             if ui.button("Run again").clicked() {
-                app.request();
+                app.commands.push(Command::Rerun);
             }
         } else if let Some(text) = finished {
             ui.label(text);
