@@ -1,22 +1,16 @@
-//! The torsim window: the model being edited, the latest results, and the panels.
-//! Edits go through [`TorsimApp::commit`], which keeps undo history, marks the model
-//! unsaved and sends a new request to the simulation thread.
+//! The torsim window: the model being edited, the latest results ([`crate::gui::results`]),
+//! and the panels. The views change the model through commands, which the edit history
+//! applies ([`crate::gui::history`]): undo, the unsaved mark, a new request to the
+//! simulation thread.
 
 use super::views::{editor, plots};
 use super::{export, files, recordings};
-use crate::gui::session::recording_job::RecordingView;
-use crate::gui::session::trace_data::LiveTrace;
-use crate::gui::session::trace_job::RunAnalysis;
-use crate::gui::session::worker::{Modal, PanelError, Payload, SimResult, Worker};
+use crate::gui::session::worker::Worker;
 use crate::gui::trace_state::{self, TraceState};
 use crate::gui::views::schematic::{self, Selection};
 use std::path::PathBuf;
-use std::sync::Arc;
 
 use torsim::model::{Model, ModelError, validate};
-
-use torsim::response::Response;
-use torsim::transient::Simulation;
 
 /// The plot shown in the central panel.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -31,40 +25,6 @@ pub enum Tab {
     Traces,
     /// Diagnosis of bench recordings against the model.
     Diagnosis,
-}
-
-/// The latest results for the model on screen (the last good ones stay while an edit is
-/// invalid or still computing).
-#[derive(Default)]
-pub struct Results {
-    /// Generation of the last request.
-    pub generation: u64,
-    /// Modes, Campbell diagram and damped modes.
-    pub campbell: Option<Arc<Modal>>,
-    /// The request the Campbell diagram on screen answers.
-    pub campbell_generation: u64,
-    /// Forced response.
-    pub response: Option<Arc<Response>>,
-    /// The coupling ratings on that response, and the linear range.
-    pub ratings: Option<Arc<crate::gui::session::worker::RatingsResult>>,
-    /// The engine's working cycle at full load.
-    pub engine_cycle: Option<Arc<torsim::physics::engine_cycle::EngineCycle>>,
-    /// The finished time run.
-    pub trace: Option<Arc<Simulation>>,
-    /// Progress of the time run.
-    pub trace_progress: f32,
-    /// What the time run runs, for a person (`"run-up 1000 to 2000 rpm in 60 s"`).
-    pub trace_label: String,
-    /// The time run's samples as they arrive.
-    pub live: Option<LiveTrace>,
-    /// Orders and spectrograms of the finished time run.
-    pub trace_analysis: Option<Arc<RunAnalysis>>,
-    /// The open recording, read and analysed.
-    pub recording: Option<Arc<RecordingView>>,
-    /// Generation of the last time run cancelled.
-    pub trace_cancelled: Option<u64>,
-    /// Errors by panel.
-    pub errors: Vec<PanelError>,
 }
 
 /// The application.
@@ -91,9 +51,9 @@ pub struct TorsimApp {
     pub stations: Vec<String>,
     /// The model before the edit gesture in progress (a drag, or typing in a field that
     /// still has focus): the whole gesture becomes one undo step when it ends.
-    gesture_start: Option<Model>,
+    pub(crate) gesture_start: Option<Model>,
     /// Results.
-    pub results: Results,
+    pub results: crate::gui::results::Results,
     /// Central tab.
     pub tab: Tab,
     /// Mode selected for the mode-shape view (0-based).
@@ -128,8 +88,8 @@ pub struct TorsimApp {
     /// The title last sent to the window (sent again only when it changes).
     shown_title: Option<String>,
     /// Edit-to-plot latency, logged when asked for ([`crate::gui::latency`]).
-    latency: crate::gui::latency::Latency,
-    worker: Worker,
+    pub(crate) latency: crate::gui::latency::Latency,
+    pub(crate) worker: Worker,
 }
 
 impl TorsimApp {
@@ -148,7 +108,7 @@ impl TorsimApp {
             commands: Default::default(),
             stations: Vec::new(),
             gesture_start: None,
-            results: Results::default(),
+            results: Default::default(),
             tab: Tab::Campbell,
             selected_mode: 0,
             plots: plots::PlotState::default(),
@@ -201,139 +161,6 @@ impl TorsimApp {
     /// Stops the running time run; the other results stay.
     pub fn cancel_trace(&self) {
         self.worker.cancel(self.results.generation);
-    }
-
-    /// Records a finished edit: `before` (or the start of the gesture it ends) goes on the
-    /// undo stack, the model is unsaved, results are requested again. The tests' shortcut
-    /// for an edit; the views send [`crate::gui::command::Command::Edit`].
-    #[cfg(test)]
-    pub fn commit(&mut self, before: Model) {
-        self.commit_live(before, false);
-    }
-
-    /// Records an edit that may be part of a gesture: results are requested at once (so
-    /// they follow a drag live), but while `in_progress` the undo step stays open, and the
-    /// whole gesture becomes one step when it ends.
-    pub fn commit_live(&mut self, before: Model, in_progress: bool) {
-        if before != self.model {
-            if self.gesture_start.is_none() {
-                self.gesture_start = Some(before);
-            }
-            self.redo.clear();
-            self.dirty = true;
-            self.revision += 1;
-            self.request();
-            if self.invalid.is_none() {
-                self.latency.edited(self.results.generation);
-            }
-        }
-        if !in_progress {
-            self.end_gesture();
-        }
-    }
-
-    /// True while an edit gesture (a drag, typing in a field) is open.
-    pub fn gesture_open(&self) -> bool {
-        self.gesture_start.is_some()
-    }
-
-    /// Closes the gesture in progress, if any: one undo step when it changed the model.
-    fn end_gesture(&mut self) {
-        if let Some(start) = self.gesture_start.take()
-            && start != self.model
-        {
-            self.undo.push(start);
-        }
-    }
-
-    /// Undoes the last edit.
-    pub fn undo(&mut self) {
-        self.end_gesture();
-        if let Some(previous) = self.undo.pop() {
-            self.redo.push(std::mem::replace(&mut self.model, previous));
-            self.dirty = true;
-            self.revision += 1;
-            self.request();
-        }
-    }
-
-    /// Redoes the last undone edit.
-    pub fn redo(&mut self) {
-        self.end_gesture();
-        if let Some(next) = self.redo.pop() {
-            self.undo.push(std::mem::replace(&mut self.model, next));
-            self.dirty = true;
-            self.revision += 1;
-            self.request();
-        }
-    }
-
-    /// Applies what the views asked for this frame, in order; the window draws the
-    /// outcome in the next frame, which this asks for.
-    pub fn apply_commands(&mut self, ctx: &egui::Context) {
-        use crate::gui::command::Command;
-        let commands = self.commands.take();
-        if !commands.is_empty() {
-            ctx.request_repaint();
-        }
-        for command in commands {
-            match command {
-                Command::Edit { model, in_progress } => {
-                    let before = std::mem::replace(&mut self.model, *model);
-                    self.commit_live(before, in_progress);
-                }
-                Command::EndGesture => self.end_gesture(),
-                Command::Undo => self.undo(),
-                Command::Redo => self.redo(),
-                Command::Select(selection) => self.selected = selection,
-                Command::ShowTab(tab) => self.tab = tab,
-                Command::Rerun => self.request(),
-                Command::CancelTrace => self.cancel_trace(),
-            }
-        }
-    }
-
-    /// Takes every result the worker sent; stale ones are dropped.
-    pub fn receive(&mut self) {
-        while let Ok(SimResult {
-            generation,
-            payload,
-        }) = self.worker.results.try_recv()
-        {
-            if let Payload::Cancelled = payload {
-                self.results.trace_cancelled = Some(generation);
-                continue;
-            }
-            if generation != self.results.generation {
-                continue;
-            }
-            match payload {
-                Payload::Modal(c) => {
-                    self.results.campbell = Some(c);
-                    self.results.campbell_generation = generation;
-                    self.latency.arrived(generation);
-                }
-                Payload::Response(r) => self.results.response = Some(r),
-                Payload::Ratings(r) => self.results.ratings = Some(r),
-                Payload::EngineCycle(c) => self.results.engine_cycle = Some(c),
-                Payload::Trace(t) => {
-                    self.results.trace = Some(t);
-                    self.results.trace_progress = 1.0;
-                }
-                Payload::Progress(p) => self.results.trace_progress = p,
-                Payload::Error(e) => self.results.errors.push(e),
-                other => trace_state::receive(self, generation, other),
-            }
-        }
-    }
-
-    /// The error of a panel, if any.
-    pub fn error_of(&self, panel: &str) -> Option<&str> {
-        self.results
-            .errors
-            .iter()
-            .find(|e| e.panel == panel)
-            .map(|e| e.message.as_str())
     }
 
     /// The window title: model name, file, unsaved mark.
