@@ -84,6 +84,12 @@ fn clicking_the_schematic_selects_and_opens_the_element() {
     let canvas = h.get_by_label(CANVAS_LABEL).rect();
     click_at(&mut h, canvas.left_bottom() + vec2(4.0, -4.0));
     assert_eq!(h.state().selected, None);
+    // Selecting the engine scrolled the panel to its section, which took the inertias
+    // out of view (under the schematic): a user scrolls back up first.
+    for _ in 0..4 {
+        h.get_by_label("J throw2").scroll_up();
+        h.run_steps(2);
+    }
     h.get_by_label("J throw2").click();
     h.run_steps(2);
     assert_eq!(h.state().selected, Some(Selection::Inertia(2)));

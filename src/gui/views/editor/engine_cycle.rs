@@ -5,7 +5,7 @@
 
 use crate::gui::views::plots::{fmt, nice_grid, nice_x_grid, tick_label};
 use egui::{Color32, Ui};
-use egui_plot::{Bar, BarChart, Legend, Line, Plot, PlotPoints};
+use egui_plot::{Bar, BarChart, Line, Plot, PlotPoints};
 use torsim::physics::engine_cycle::EngineCycle;
 
 /// Height of each small plot, points.
@@ -53,9 +53,15 @@ pub fn cycle_ui(ui: &mut Ui, cycle: Option<&EngineCycle>) {
                         Color32::from_rgb(77, 139, 245),
                     ));
                 });
+            // The key above the plot: the editor's panel is too narrow for a legend beside
+            // it, and one on it covers the curves (issue 16).
+            ui.horizontal(|ui| {
+                let key = |text: &str, colour| egui::RichText::new(text).small().color(colour);
+                ui.label(key("— engine", Color32::from_rgb(255, 150, 40)));
+                ui.label(key("— one cylinder", Color32::from_gray(150)));
+            });
             Plot::new("engine torque")
                 .height(HEIGHT)
-                .legend(Legend::default())
                 .x_axis_label("crank angle [°]")
                 .y_axis_label("gas torque [N·m]")
                 .x_grid_spacer(crank_grid())

@@ -8,7 +8,7 @@ use crate::gui::session::worker::Modal;
 use crate::gui::views::plots::modes::{main_element, mode_text, shape_plot};
 use crate::gui::views::plots::series::{Series, grid_125, hover_label};
 use egui::{Color32, Ui};
-use egui_plot::{Legend, Plot, VLine};
+use egui_plot::{Plot, VLine};
 use torsim::modal::Crossing;
 use torsim::response::Response;
 
@@ -126,13 +126,14 @@ pub fn detail_ui(app: &mut TorsimApp, ui: &mut Ui, c: &Modal, x: Crossing) {
                     ui.selectable_value(&mut app.plots.crossing_station, value, name);
                 }
             });
+        // Named above the plot, not in a legend on it (issue 16: legends covered data).
+        ui.label(egui::RichText::new(&series.name).color(series.color));
         super::fit_for_model(
             ui,
             Plot::new("crossing_response"),
             "crossing_response",
             app.plots.model_epoch,
         )
-        .legend(Legend::default().follow_insertion_order(true))
         .x_axis_label("engine speed [rpm]")
         .y_axis_label("IAS amplitude [rpm] (zero-to-peak)")
         .x_grid_spacer(grid_125)

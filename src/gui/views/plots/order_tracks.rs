@@ -1,13 +1,16 @@
 //! Order tracks of a run-up: for one station, the amplitude of each engine order in
 //! every STFT window at the order's exact frequency (`torsim::signal`, rpm 0-peak) over
-//! time, linked to the spectrogram above; the recording's dashed when one is open.
+//! time, linked to the spectrogram above; the recording's dashed when one is open. The
+//! legend sits in the column under the spectrogram's colour scale, beside the data
+//! (issue 16: on the plot it covered the tracks); which orders are drawn is chosen in the
+//! "order tracks" menu above.
 
 use super::mode_color;
 use crate::gui::session::spectrogram::SpectrogramSet;
 use crate::gui::views::plots::stft::{SCALE_W, SpeedAxis};
 use crate::gui::views::plots::time_series::{self, Look, draw, time_link, visible_range};
-use egui::Ui;
-use egui_plot::{AxisHints, HoverPosition, Legend, Plot};
+use egui::{RichText, Ui};
+use egui_plot::{AxisHints, HoverPosition, Plot};
 use std::sync::Arc;
 use torsim::signal::StationAnalysis;
 
@@ -24,16 +27,46 @@ pub fn order_tracks_ui(
     let Some(tracks) = station.and_then(|s| s.stft.as_ref()) else {
         return;
     };
-    let speed_axis = axis.clone();
-    let hover_axis = axis.clone();
-    let legend = Legend::default().follow_insertion_order(true);
     let label = if other.is_some() {
         "order amplitude [rpm] (0-peak; dashed: measured)"
     } else {
         "order amplitude [rpm] (0-peak)"
     };
+    let drawn: Vec<(usize, f64)> = set
+        .orders
+        .iter()
+        .copied()
+        .filter(|q| shown.contains(q))
+        .enumerate()
+        .collect();
+    ui.horizontal_top(|ui| {
+        plot_ui(ui, set, axis, tracks, other, shown, label);
+        ui.vertical(|ui| {
+            ui.set_width(SCALE_W - ui.spacing().item_spacing.x);
+            for (rank, q) in &drawn {
+                ui.label(
+                    RichText::new(format!("— order {q}"))
+                        .small()
+                        .color(mode_color(*rank)),
+                );
+            }
+        });
+    });
+}
+
+/// The plot of [`order_tracks_ui`], leaving [`SCALE_W`] for the legend.
+fn plot_ui(
+    ui: &mut Ui,
+    set: &Arc<SpectrogramSet>,
+    axis: &SpeedAxis,
+    tracks: &torsim::signal::StationStft,
+    other: Option<(Arc<SpectrogramSet>, &StationAnalysis)>,
+    shown: &[f64],
+    label: &str,
+) {
+    let speed_axis = axis.clone();
+    let hover_axis = axis.clone();
     Plot::new("order-tracks")
-        .legend(legend)
         .width((ui.available_width() - SCALE_W).max(200.0))
         .y_axis_min_width(time_series::Y_AXIS_W)
         .y_grid_spacer(time_series::nice_grid())

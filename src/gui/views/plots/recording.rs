@@ -4,11 +4,11 @@
 //! run-up — with a table of mean speed, RMS, irregularity and the dominant order (seed
 //! 001 Tables 2, 3, 9).
 
-use super::mode_color;
+use super::side_legend::{Entry, with_side_legend};
 use crate::gui::app::TorsimApp;
 use crate::gui::session::trace_data::GroupKind;
 use egui::{Color32, Ui};
-use egui_plot::{Bar, BarChart, Legend, Line, LineStyle, Plot};
+use egui_plot::{Bar, BarChart, Line, LineStyle, Plot};
 use torsim::signal::{Analysis, OrderAmplitude, StationAnalysis};
 
 const SIMULATED: Color32 = Color32::from_rgb(60, 130, 230);
@@ -135,8 +135,21 @@ pub fn orders_ui(app: &mut TorsimApp, ui: &mut Ui) {
                 .y_grid_spacer(crate::gui::views::plots::time_series::nice_grid())
                 .y_axis_formatter(super::tick_label)
                 .x_axis_formatter(super::tick_label)
-                .legend(Legend::default().follow_insertion_order(true).title(name))
-                .y_axis_label("amplitude [rpm] 0-pk");
+                .y_axis_label(format!("{name} [rpm] 0-pk"));
+            // The legend beside the plot (issue 16: on it, it covered the bars).
+            let mut entries = vec![Entry {
+                name: "simulated".into(),
+                color: SIMULATED,
+                dashed: false,
+            }];
+            if m.is_some() {
+                entries.push(Entry {
+                    name: "measured".into(),
+                    color: MEASURED,
+                    dashed: true,
+                });
+            }
+            let legend_id = format!("orders {name}");
             let last = i + 1 == shown.len();
             if ramp {
                 let q = app.traces.track_order;
@@ -158,17 +171,22 @@ pub fn orders_ui(app: &mut TorsimApp, ui: &mut Ui) {
                 if last {
                     plot = plot.x_axis_label("reference speed [rpm]");
                 }
-                plot.show(ui, |plot| {
-                    plot.line(
-                        Line::new(format!("simulated, order {q}"), sim_track).color(SIMULATED),
-                    );
-                    if !meas_track.is_empty() {
-                        plot.line(
-                            Line::new(format!("measured, order {q}"), meas_track)
-                                .color(MEASURED)
-                                .style(LineStyle::dashed_dense()),
-                        );
-                    }
+                with_side_legend(ui, &legend_id, &entries, per, |ui, hidden| {
+                    plot.show(ui, |plot| {
+                        if !hidden.contains("simulated") {
+                            plot.line(
+                                Line::new(format!("simulated, order {q}"), sim_track)
+                                    .color(SIMULATED),
+                            );
+                        }
+                        if !meas_track.is_empty() && !hidden.contains("measured") {
+                            plot.line(
+                                Line::new(format!("measured, order {q}"), meas_track)
+                                    .color(MEASURED)
+                                    .style(LineStyle::dashed_dense()),
+                            );
+                        }
+                    });
                 });
             } else {
                 let width = if m.is_some() { 0.2 } else { 0.35 };
@@ -198,18 +216,20 @@ pub fn orders_ui(app: &mut TorsimApp, ui: &mut Ui) {
                 if last {
                     plot = plot.x_axis_label("engine order");
                 }
-                plot.include_y(0.0)
-                    .default_x_bounds(0.0, last_order)
-                    .show(ui, |plot| {
-                        plot.bar_chart(sim_bars);
-                        if let Some(b) = meas_bars {
+                let plot = plot.include_y(0.0).default_x_bounds(0.0, last_order);
+                with_side_legend(ui, &legend_id, &entries, per, |ui, hidden| {
+                    plot.show(ui, |plot| {
+                        if !hidden.contains("simulated") {
+                            plot.bar_chart(sim_bars);
+                        }
+                        if let Some(b) = meas_bars.filter(|_| !hidden.contains("measured")) {
                             plot.bar_chart(b);
                         }
                     });
+                });
             }
         }
     });
-    let _ = mode_color(0);
 }
 
 /// One line per station: mean speed, RMS, IR and the dominant order, simulated and
