@@ -248,3 +248,76 @@ fn the_time_domain_and_the_response_judge_alike() {
         }
     }
 }
+
+/// The note where a stage's twist leaves its amplitude law's measured range (issue 16,
+/// item 5): on the genset's coupling, the static deformation solved here from seed 000's
+/// eq. 1, 12 and the temperature polynomial (independently of the library's solver),
+/// then ranges below it, around it and beyond anything reached.
+#[test]
+fn twist_beyond_the_amplitude_law_is_noted() {
+    use torsim::ratings::beyond_amplitude_law;
+    let mut model = genset();
+    let j = model
+        .connections
+        .iter()
+        .position(|c| c.name == "coupling")
+        .expect("coupling");
+    // Static: 250 kW at 1800 rpm through k0·α_Tc(50 °C)·α_x(x)·θ, x = θ·80 mm.
+    let torque_nm = 250e3 / (1800.0 * 2.0 * PI / 60.0);
+    let k0 = 1.085e6 * 0.08 * 0.08 * 4.0 * 4.0 / 8.0;
+    let alpha_tc = 0.000187 * 50.0 * 50.0 - 0.02565 * 50.0 + 1.530;
+    let carried = |x_mm: f64| {
+        let alpha_x = 0.0152 * x_mm * x_mm + 0.0033 * x_mm + 1.0;
+        k0 * alpha_tc * alpha_x * x_mm / 80.0
+    };
+    let (mut lo, mut hi) = (0.0, 100.0);
+    for _ in 0..200 {
+        let mid = 0.5 * (lo + hi);
+        if carried(mid) < torque_nm {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    let static_mm = 0.5 * (lo + hi);
+    let set_range = |model: &mut Model, range: Option<[f64; 2]>| {
+        let ConnectionKind::Rubber(stage) = &mut model.connections[j].kind else {
+            panic!("rubber");
+        };
+        stage.amplitude_poly.as_mut().expect("amplitude law").range = range;
+    };
+
+    // No stated range: nothing to note.
+    let (system, r) = sweep(&model, 400.0, 2000.0);
+    assert!(beyond_amplitude_law(&model, &system, &r).is_empty());
+
+    // A range ending below the static deformation: every speed, at least the static part.
+    set_range(&mut model, Some([0.0, 0.9 * static_mm]));
+    let (system, r) = sweep(&model, 400.0, 2000.0);
+    let notes = beyond_amplitude_law(&model, &system, &r);
+    assert_eq!(notes.len(), 1);
+    assert_eq!(notes[0].connection, "coupling");
+    assert_eq!(notes[0].speeds_rpm, [400.0, 2000.0]);
+    assert!(
+        notes[0].deformation_mm > static_mm,
+        "{} mm against a static {static_mm:.3} mm",
+        notes[0].deformation_mm
+    );
+
+    // A range ending 40 % above it: only where the vibration adds most, around the
+    // 3rd-order resonance of mode 1 at 520 rpm.
+    set_range(&mut model, Some([0.0, 1.4 * static_mm]));
+    let (system, r) = sweep(&model, 400.0, 2000.0);
+    let notes = beyond_amplitude_law(&model, &system, &r);
+    assert_eq!(notes.len(), 1, "{notes:?}");
+    let [from, to] = notes[0].speeds_rpm;
+    assert!(
+        from <= 520.0 && to >= 520.0 && to < 800.0,
+        "{from}–{to} rpm"
+    );
+
+    // Beyond anything reached: nothing.
+    set_range(&mut model, Some([0.0, 1e3]));
+    let (system, r) = sweep(&model, 400.0, 2000.0);
+    assert!(beyond_amplitude_law(&model, &system, &r).is_empty());
+}

@@ -10,7 +10,8 @@ use serde_json::{Value, json};
 use torsim::model::Model;
 use torsim::physics::System;
 use torsim::ratings::{
-    BeyondLinear, Check, LINEAR_IAS_SHARE, StageRating, beyond_linear_range, check_ratings,
+    BeyondLinear, Check, LINEAR_IAS_SHARE, OutsideAmplitudeLaw, StageRating, beyond_amplitude_law,
+    beyond_linear_range, check_ratings,
 };
 use torsim::response::Response;
 
@@ -20,6 +21,8 @@ pub struct Ratings {
     pub stages: Vec<StageRating>,
     /// Where the linear response leaves its range.
     pub beyond: Vec<BeyondLinear>,
+    /// Where a stage's twist leaves its amplitude law's measured range.
+    pub outside_law: Vec<OutsideAmplitudeLaw>,
     /// The model's operating range, rpm.
     pub operating_rpm: Option<[f64; 2]>,
 }
@@ -31,6 +34,7 @@ impl Ratings {
         Self {
             stages,
             beyond: Vec::new(),
+            outside_law: Vec::new(),
             operating_rpm: model.operation.operating_range_rpm,
         }
     }
@@ -40,6 +44,7 @@ impl Ratings {
         Self {
             stages: check_ratings(model, system, response),
             beyond: beyond_linear_range(system, response),
+            outside_law: beyond_amplitude_law(model, system, response),
             operating_rpm: model.operation.operating_range_rpm,
         }
     }
@@ -129,6 +134,18 @@ pub fn text(r: &Ratings) -> String {
             100.0 * LINEAR_IAS_SHARE
         );
     }
+    for o in &r.outside_law {
+        out += &format!(
+            "note: {} deforms its elements by up to {:.2} mm ({:.0}–{:.0} rpm), outside its \
+             amplitude law's measured {}–{} mm: the law is held at its end value there\n",
+            o.connection,
+            o.deformation_mm,
+            o.speeds_rpm[0],
+            o.speeds_rpm[1],
+            o.range_mm[0],
+            o.range_mm[1]
+        );
+    }
     out
 }
 
@@ -150,7 +167,8 @@ fn check_json(c: &Check) -> Value {
 
 /// The JSON part: `ratings` (per stage: its limits, S_t, the worst check per limit over
 /// the sweep and the operating range, and the utilisation per limit at every speed) and
-/// `beyond_linear_range`.
+/// `beyond_linear_range` (the nodes, then the stages outside their amplitude law's range
+/// as `{connection, speeds_rpm, deformation_mm, range_mm}`).
 pub fn json(r: &Ratings) -> Result<(Value, Value), CliError> {
     let mut stages = Vec::new();
     for s in &r.stages {
@@ -181,6 +199,14 @@ pub fn json(r: &Ratings) -> Result<(Value, Value), CliError> {
         .beyond
         .iter()
         .map(|b| json!({ "node": b.node, "speeds_rpm": b.speeds_rpm, "worst_ias_share": b.worst_share }))
+        .chain(r.outside_law.iter().map(|o| {
+            json!({
+                "connection": o.connection,
+                "speeds_rpm": o.speeds_rpm,
+                "deformation_mm": o.deformation_mm,
+                "range_mm": o.range_mm,
+            })
+        }))
         .collect();
     Ok((Value::Array(stages), Value::Array(beyond)))
 }

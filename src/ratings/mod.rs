@@ -22,7 +22,9 @@ mod linear_range;
 mod response;
 mod simulated;
 
-pub use linear_range::{BeyondLinear, LINEAR_IAS_SHARE, beyond_linear_range};
+pub use linear_range::{
+    BeyondLinear, LINEAR_IAS_SHARE, OutsideAmplitudeLaw, beyond_amplitude_law, beyond_linear_range,
+};
 pub use response::check_ratings;
 pub use simulated::{check_run_up_peaks, check_simulated, merge_points};
 

@@ -121,6 +121,8 @@ pub struct RatingsResult {
     pub stages: Vec<torsim::ratings::StageRating>,
     /// Where the IAS leaves the linear model's range.
     pub beyond: Vec<torsim::ratings::BeyondLinear>,
+    /// Where a stage's twist leaves its amplitude law's measured range.
+    pub outside_law: Vec<torsim::ratings::OutsideAmplitudeLaw>,
 }
 
 /// The worker thread and its channels.
@@ -327,6 +329,7 @@ pub fn compute(
             let ratings = RatingsResult {
                 stages: torsim::ratings::check_ratings(model, &system, &r),
                 beyond: torsim::ratings::beyond_linear_range(&system, &r),
+                outside_law: torsim::ratings::beyond_amplitude_law(model, &system, &r),
             };
             send(SimResult::new(generation, Payload::Response(Arc::new(r))));
             send(SimResult::new(
