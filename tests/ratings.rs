@@ -312,7 +312,7 @@ fn twist_beyond_the_amplitude_law_is_noted() {
     assert_eq!(notes.len(), 1, "{notes:?}");
     let [from, to] = notes[0].speeds_rpm;
     assert!(
-        from <= 520.0 && to >= 520.0 && to < 800.0,
+        from <= 520.0 && (520.0..800.0).contains(&to),
         "{from}–{to} rpm"
     );
 
