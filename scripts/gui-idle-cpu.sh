@@ -14,7 +14,18 @@ display=:$((90 + RANDOM % 9))
 Xvfb "$display" -screen 0 1280x800x24 >/dev/null 2>&1 &
 xvfb=$!
 home="$(mktemp -d)"
-trap 'kill $app $xvfb 2>/dev/null || true; rm -rf "$home"' EXIT
+app=
+# The window goes first and is waited for, then the display: killed the other way round,
+# the window lost its display mid-frame and printed a segfault.
+cleanup() {
+    if [[ -n $app ]]; then
+        kill "$app" 2>/dev/null || true
+        wait "$app" 2>/dev/null || true
+    fi
+    kill "$xvfb" 2>/dev/null || true
+    rm -rf "$home"
+}
+trap cleanup EXIT
 sleep 1
 DISPLAY=$display HOME=$home "$bin" "preset:$preset" >/dev/null 2>&1 &
 app=$!
