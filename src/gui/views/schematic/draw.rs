@@ -215,10 +215,14 @@ fn link_ui(p: &Painter, pal: &Palette, model: &Model, link: &LinkShape) {
                     Stroke::new(1.0, pal.background.gamma_multiply(0.5)),
                 );
             }
+            // Cut to the width of the line between its two nodes (as the node names are
+            // cut to their column): two stages side by side wrote over each other.
+            let room = (link.line[n - 1].x - link.line[0].x).abs().max(s.width());
+            let max_chars = ((room - 4.0) / 6.0).max(4.0) as usize;
             p.text(
                 s.center_top() - vec2(0.0, 4.0),
                 Align2::CENTER_BOTTOM,
-                &c.name,
+                short(&c.name, max_chars),
                 FontId::proportional(11.0),
                 color,
             );
