@@ -9,13 +9,23 @@ mod gui;
 /// A build without the `gui` feature (issue 13, deliverable 5): no window to open.
 #[cfg(not(feature = "gui"))]
 mod gui {
-    use crate::cli::error::CliError;
+    /// Why there is no window: this build has none.
+    #[derive(Debug, thiserror::Error)]
+    #[error(
+        "this torsim was built without the `gui` feature; name a command (see `torsim --help`)"
+    )]
+    pub struct OpenError;
 
-    /// No subcommand: a usage error (exit 2), since there is no window in this build.
-    pub fn run(_model: Option<String>) -> Result<(), CliError> {
-        Err(CliError::input(anyhow::anyhow!(
-            "this torsim was built without the `gui` feature; name a command (see `torsim --help`)"
-        )))
+    impl OpenError {
+        /// A usage error (exit 2): the user asked this build for what it has not got.
+        pub fn is_input(&self) -> bool {
+            true
+        }
+    }
+
+    /// No subcommand: there is no window in this build.
+    pub fn run(_model: Option<String>) -> Result<(), OpenError> {
+        Err(OpenError)
     }
 }
 

@@ -191,9 +191,12 @@ pub enum Command {
 pub fn run(cli: Cli) -> Result<(), CliError> {
     torsim::limits::set(cli.limits.limits()?);
     match cli.command {
-        None => crate::gui::run(cli.model).map_err(|e| match e {
-            crate::gui::OpenError::Model(e) => CliError::input(e),
-            e @ crate::gui::OpenError::Window(_) => CliError::failed(e),
+        None => crate::gui::run(cli.model).map_err(|e| {
+            if e.is_input() {
+                CliError::input(e)
+            } else {
+                CliError::failed(e)
+            }
         }),
         Some(Command::Modes {
             model,

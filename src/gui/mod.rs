@@ -42,6 +42,13 @@ pub enum OpenError {
     Window(String),
 }
 
+impl OpenError {
+    /// True for the user's input (exit 2: the model), false for a failure (exit 1).
+    pub fn is_input(&self) -> bool {
+        matches!(self, Self::Model(_))
+    }
+}
+
 /// The smallest window, points: below it the panels would overlap (issue 16).
 pub const MIN_WINDOW_SIZE: [f32; 2] = [800.0, 500.0];
 
