@@ -135,16 +135,7 @@ pub fn text(r: &Ratings) -> String {
         );
     }
     for o in &r.outside_law {
-        out += &format!(
-            "note: {} deforms its elements by up to {:.2} mm ({:.0}–{:.0} rpm), outside its \
-             amplitude law's measured {}–{} mm: the law is held at its end value there\n",
-            o.connection,
-            o.deformation_mm,
-            o.speeds_rpm[0],
-            o.speeds_rpm[1],
-            o.range_mm[0],
-            o.range_mm[1]
-        );
+        out += &format!("note: {o}\n");
     }
     out
 }

@@ -57,16 +57,11 @@ pub fn spawn<T: Send + 'static>(
     ctx: &egui::Context,
     work: impl FnOnce() -> T + Send + 'static,
 ) -> Result<Pending<T>, String> {
-    let (tx, answer) = bounded(1);
-    let ctx = ctx.clone();
-    std::thread::Builder::new()
-        .name(name.into())
-        .spawn(move || {
-            let _ = tx.send(work());
-            ctx.request_repaint();
-        })
+    let (later, pending) = deferred();
+    later
+        .start(name, ctx, work)
         .map_err(|e| format!("cannot start a thread ({name}): {e}"))?;
-    Ok(Pending { answer })
+    Ok(pending)
 }
 
 /// Work whose thread starts later than its answer is awaited: the PNG export's writing,
@@ -86,14 +81,24 @@ impl<T: Send + 'static> Deferred<T> {
     /// Runs `work` on a thread named `name` now; its answer goes to the [`Pending`]. A
     /// thread that cannot start leaves the answer [`Lost`].
     pub fn spawn(self, name: &str, ctx: &egui::Context, work: impl FnOnce() -> T + Send + 'static) {
-        let ctx = ctx.clone();
-        let tx = self.tx;
-        let _ = std::thread::Builder::new()
+        let _ = self.start(name, ctx, work);
+    }
+
+    /// The thread of [`Self::spawn`] and [`spawn`]: sends `work`'s answer, then repaints.
+    fn start(
+        self,
+        name: &str,
+        ctx: &egui::Context,
+        work: impl FnOnce() -> T + Send + 'static,
+    ) -> std::io::Result<()> {
+        let (tx, ctx) = (self.tx, ctx.clone());
+        std::thread::Builder::new()
             .name(name.into())
             .spawn(move || {
                 let _ = tx.send(work());
                 ctx.request_repaint();
-            });
+            })
+            .map(drop)
     }
 }
 

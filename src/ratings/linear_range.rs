@@ -63,6 +63,23 @@ pub struct OutsideAmplitudeLaw {
     pub range_mm: [f64; 2],
 }
 
+impl std::fmt::Display for OutsideAmplitudeLaw {
+    /// The note for a person, as `response` and the window give it.
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
+            "{} deforms its elements by up to {:.2} mm ({:.0}–{:.0} rpm), outside its amplitude \
+             law's measured {}–{} mm: the law is held at its end value there",
+            self.connection,
+            self.deformation_mm,
+            self.speeds_rpm[0],
+            self.speeds_rpm[1],
+            self.range_mm[0],
+            self.range_mm[1]
+        )
+    }
+}
+
 /// The rubber stages whose twist in `response` (of `system`, built from `model`) reaches
 /// beyond the stated range of their amplitude law. Each order's twist amplitude is its
 /// torque over the stage's dynamic stiffness at the order's frequency,

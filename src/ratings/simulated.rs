@@ -96,14 +96,13 @@ pub fn check_run_up_peaks(model: &Model, sim: &Simulation) -> Vec<StageRating> {
             connection_index: j,
             rating: rating.clone(),
             temperature_factor: s_t,
-            by_speed: vec![vec![super::Check {
-                kind: super::CheckKind::MaxTorque,
-                speed_rpm: reference.get(k).copied().unwrap_or(0.0),
-                order: None,
+            by_speed: vec![vec![super::check(
+                super::CheckKind::MaxTorque,
+                reference.get(k).copied().unwrap_or(0.0),
+                None,
                 load,
-                limit: t_max,
-                utilisation: load / t_max,
-            }]],
+                t_max,
+            )]],
         });
     }
     out

@@ -203,21 +203,6 @@ pub fn warnings_ui(app: &TorsimApp, ui: &mut Ui) {
         .on_hover_text(lines.join("\n"));
     }
     for o in &ratings.outside_law {
-        ui.add(
-            egui::Label::new(
-                RichText::new(format!(
-                    "{} deforms its elements by up to {:.2} mm ({:.0}–{:.0} rpm), outside its \
-                     amplitude law's measured {}–{} mm: the law is held at its end value",
-                    o.connection,
-                    o.deformation_mm,
-                    o.speeds_rpm[0],
-                    o.speeds_rpm[1],
-                    o.range_mm[0],
-                    o.range_mm[1]
-                ))
-                .weak(),
-            )
-            .wrap(),
-        );
+        ui.add(egui::Label::new(RichText::new(o.to_string()).weak()).wrap());
     }
 }
