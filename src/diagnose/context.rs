@@ -18,9 +18,10 @@ pub const PLAIN_BOUNDS: Bounds = Bounds {
     log: true,
 };
 /// A priori spread of a plain parameter (its catalogue or drawing tolerance), as a
-/// relative standard deviation: 10 %. It enters the fit as one residual `ln f / 0.1`
-/// per factor and only matters along directions the recordings cannot tell apart (an
-/// inertia and a stiffness scaled together keep every natural frequency).
+/// relative standard deviation: 10 %. It enters the fit as one residual
+/// `w·ln f / 0.1` per factor ([`Context::prior_weight`] `w`) and only matters along
+/// directions the recordings cannot tell apart (an inertia and a stiffness scaled
+/// together keep every natural frequency).
 pub(super) const PLAIN_PRIOR: f64 = 0.1;
 /// Levenberg–Marquardt iterations on the surrogate, and the relative gain of the cost
 /// under which a fit stops.
@@ -57,6 +58,16 @@ pub struct Context<'a> {
     pub plain: Vec<Plain>,
     /// Settings.
     pub options: &'a DiagnoseOptions,
+    /// Weight of the plain parameters' prior against the data, `√max(1, F)` with `F` the
+    /// fitted χ²/N the plain fit reaches with weight 1 (the campaign's model floor); 1
+    /// before that fit. Where the model cannot fit the data to their noise, the misfit is
+    /// model error, not noise: weighing it with the noise's σ lets a fit buy a little of
+    /// it with large, implausible parameter changes (every inertia and stiffness at −30 %,
+    /// benchtruth 1009; one mass at +30 %, control 1035). Scaling the data's σ by the
+    /// Birge ratio `√F` is the standard correction (Birge 1932; Press et al., *Numerical
+    /// Recipes*, §15.1); weighting the prior by `√F` instead gives the same minimum and
+    /// keeps χ² in the noise's units.
+    pub prior_weight: f64,
 }
 
 impl Context<'_> {
@@ -210,7 +221,7 @@ impl Context<'_> {
         };
         let residuals = |x: &[f64]| -> Option<Vec<f64>> {
             let mut r = self.fit_z(&predict(x)?);
-            r.extend(full(x).iter().map(|f| f.ln() / PLAIN_PRIOR));
+            r.extend(full(x).iter().map(|f| self.prior_weight * f.ln() / PLAIN_PRIOR));
             Some(r)
         };
         // A new effect starts from the best of a few values across its range (a local

@@ -153,7 +153,7 @@ impl Context<'_> {
         };
         let residuals = |x: &[f64]| -> Option<Vec<f64>> {
             let mut r = self.fit_z(&predict(x)?);
-            r.extend(x.iter().map(|f| f.ln() / PLAIN_PRIOR));
+            r.extend(x.iter().map(|f| self.prior_weight * f.ln() / PLAIN_PRIOR));
             Some(r)
         };
         let bounds = vec![PLAIN_BOUNDS; n];

@@ -16,6 +16,9 @@ use crate::model::Model;
 
 /// Rounds of linear fit and time-domain correction for the plain parameters.
 const PLAIN_ROUNDS: usize = 3;
+/// Fitted χ²/N of the plain fit above which its prior is reweighed and the fit redone
+/// ([`Context::prior_weight`]); below it the weight would change by less than 22 %.
+const REWEIGH_FLOOR: f64 = 1.5;
 
 /// Diagnoses `recordings` against `model` (see the module docs of [`super`]).
 pub fn diagnose(
@@ -58,19 +61,29 @@ pub fn diagnose(
     let observed = observe(recordings, options.max_order)?;
     let held_out = holdout::held_out(&observed);
     holdout::check_split(&observed, &held_out)?;
-    let cx = Context {
+    let mut cx = Context {
         held_out,
         user: model,
         plain: plain_parameters(model),
         options,
         observed,
+        prior_weight: 1.0,
     };
     step(0.1, "simulating the model")?;
     let ones = vec![1.0; cx.plain.len()];
     // The user's model as given: its failure is the only simulation error (issue 14).
     let baseline = cx.evaluate(model.clone(), None, ones, None)?;
     step(0.2, "fitting the plain parameters")?;
-    let fitted = cx.plain_fit(&baseline, PLAIN_ROUNDS)?;
+    let mut fitted = cx.plain_fit(&baseline, PLAIN_ROUNDS)?;
+    // The campaign's model floor sets the prior's weight ([`Context::prior_weight`]); the
+    // plain fit is redone with it, and every candidate is fitted with it.
+    let floor = cx.chi2(&fitted.best, false);
+    if floor > REWEIGH_FLOOR {
+        cx.prior_weight = floor.sqrt();
+        step(0.25, "refitting the plain parameters against the model floor")?;
+        fitted = cx.plain_fit(&baseline, PLAIN_ROUNDS)?;
+    }
+    let cx = cx;
     let mut plain_rejected = fitted.rejected;
     let plain_fit = fitted.best;
     let stations: Vec<String> = {

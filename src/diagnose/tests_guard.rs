@@ -56,6 +56,7 @@ fn with_context(check: impl Fn(&Context)) {
         plain: plain_parameters(&model),
         options: &options,
         observed,
+        prior_weight: 1.0,
     };
     check(&cx);
 }
