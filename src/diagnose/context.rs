@@ -221,7 +221,11 @@ impl Context<'_> {
         };
         let residuals = |x: &[f64]| -> Option<Vec<f64>> {
             let mut r = self.fit_z(&predict(x)?);
-            r.extend(full(x).iter().map(|f| self.prior_weight * f.ln() / PLAIN_PRIOR));
+            r.extend(
+                full(x)
+                    .iter()
+                    .map(|f| self.prior_weight * f.ln() / PLAIN_PRIOR),
+            );
             Some(r)
         };
         // A new effect starts from the best of a few values across its range (a local

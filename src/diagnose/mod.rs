@@ -83,6 +83,8 @@ mod tests;
 #[cfg(test)]
 mod tests_guard;
 #[cfg(test)]
+mod tests_prior;
+#[cfg(test)]
 mod tests_rejected;
 #[cfg(test)]
 mod tests_sensor_gain;

@@ -80,7 +80,10 @@ pub fn diagnose(
     let floor = cx.chi2(&fitted.best, false);
     if floor > REWEIGH_FLOOR {
         cx.prior_weight = floor.sqrt();
-        step(0.25, "refitting the plain parameters against the model floor")?;
+        step(
+            0.25,
+            "refitting the plain parameters against the model floor",
+        )?;
         fitted = cx.plain_fit(&baseline, PLAIN_ROUNDS)?;
     }
     let cx = cx;

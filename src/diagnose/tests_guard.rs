@@ -13,14 +13,14 @@ use super::tests::steady;
 use super::{DiagnoseError, DiagnoseOptions, decide, guard};
 use crate::model::{Model, parse_model};
 
-fn bench() -> Model {
+pub(super) fn bench() -> Model {
     let path = concat!(env!("CARGO_MANIFEST_DIR"), "/presets/diagnosis-bench.toml");
     let text = std::fs::read_to_string(path).expect("the preset");
     parse_model(&text, "diagnosis-bench.toml").expect("the preset parses")
 }
 
 /// Four steady regimes of the crank: 3000 and 4000 rpm fitted, 3500 and 4500 held out.
-fn recordings() -> Vec<LabelledRecording> {
+pub(super) fn recordings() -> Vec<LabelledRecording> {
     [3000.0, 3500.0, 4000.0, 4500.0]
         .iter()
         .enumerate()
@@ -30,7 +30,7 @@ fn recordings() -> Vec<LabelledRecording> {
 
 /// A model's amplitudes: the measured ones × (1 + `fitted`) on the fitted observations
 /// and × (1 + `held`) on the held-out ones.
-fn evaluated(cx: &Context, fitted: f64, held: f64, value: Option<f64>) -> Evaluated {
+pub(super) fn evaluated(cx: &Context, fitted: f64, held: f64, value: Option<f64>) -> Evaluated {
     let simulated = cx
         .observed
         .observations
