@@ -155,9 +155,12 @@ pub fn report(
         c.out.score < (1.0 - super::branch::margin(c.candidate)) * plain_score
             && super::branch::inside(c.candidate, c.evaluated.value)
     };
-    let best_index = candidates
-        .iter()
-        .position(|c| !super::branch::is_branch(c.candidate) || clears_own_margin(c));
+    // A sensor artifact whose mismatch the other stations see too is set aside as well
+    // ([`super::sensor_local`]).
+    let best_index = candidates.iter().position(|c| {
+        (!super::branch::is_branch(c.candidate) || clears_own_margin(c))
+            && super::sensor_local::local(cx, c.candidate, plain, c.evaluated)
+    });
     let best = best_index
         .and_then(|i| candidates.get(i))
         .filter(|c| c.out.verified && c.out.rejected.is_none());
@@ -200,8 +203,8 @@ pub fn report(
             )
         };
         let sentence = super::words::effect_sentence(&b.out.effect, &parameters);
-        // The best candidate other than the verdict (the first, unless a branch was set
-        // aside before it).
+        // The best candidate other than the verdict (the first, unless a branch or a
+        // sensor artifact was set aside before it).
         let other = if best_index == Some(0) { 1 } else { 0 };
         let runner_up = candidates
             .get(other)

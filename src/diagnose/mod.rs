@@ -73,6 +73,7 @@ mod runup_tests;
 pub mod screen;
 pub mod sensor;
 pub mod sensor_gain;
+mod sensor_local;
 pub mod sensor_refine;
 pub mod settling;
 pub mod spread;
