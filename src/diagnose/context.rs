@@ -70,6 +70,22 @@ pub struct Context<'a> {
     pub prior_weight: f64,
 }
 
+impl<'a> Context<'a> {
+    /// The context of a diagnosis of `observed` against `user`: its held-out split
+    /// ([`super::holdout::held_out`]), the model's plain parameters, and the prior's
+    /// weight 1 (until the plain fit has measured the floor).
+    pub fn new(user: &'a Model, options: &'a DiagnoseOptions, observed: Observed) -> Self {
+        Self {
+            held_out: super::holdout::held_out(&observed),
+            user,
+            plain: super::surrogate::plain_parameters(user),
+            options,
+            observed,
+            prior_weight: 1.0,
+        }
+    }
+}
+
 impl Context<'_> {
     /// The time-domain amplitudes of `model` as the bench would measure them. With
     /// `only = Some((runs, fill))` just the runs flagged are simulated and every other

@@ -7,7 +7,6 @@ use super::context::Context;
 use super::observe::{RunShape, observe};
 use super::restart::second_starts;
 use super::screen::{Screened, VERIFY_ROUNDS, screen_one, verify};
-use super::surrogate::plain_parameters;
 use super::{
     DiagnoseError, DiagnoseOptions, LabelledRecording, Report, decide, holdout, parallel,
     sensor_gain, sensor_refine,
@@ -59,16 +58,8 @@ pub fn diagnose(
     let recordings = &ordered[..];
     step(0.0, "analysing the recordings")?;
     let observed = observe(recordings, options.max_order)?;
-    let held_out = holdout::held_out(&observed);
-    holdout::check_split(&observed, &held_out)?;
-    let mut cx = Context {
-        held_out,
-        user: model,
-        plain: plain_parameters(model),
-        options,
-        observed,
-        prior_weight: 1.0,
-    };
+    let mut cx = Context::new(model, options, observed);
+    holdout::check_split(&cx.observed, &cx.held_out)?;
     step(0.1, "simulating the model")?;
     let ones = vec![1.0; cx.plain.len()];
     // The user's model as given: its failure is the only simulation error (issue 14).

@@ -72,9 +72,7 @@ pub fn local(cx: &Context, c: &Candidate, plain: &Evaluated, with: &Evaluated) -
 mod tests {
     use super::*;
     use crate::diagnose::candidates::candidates;
-    use crate::diagnose::holdout::held_out;
     use crate::diagnose::observe::observe;
-    use crate::diagnose::surrogate::plain_parameters;
     use crate::diagnose::tests::steady;
     use crate::diagnose::tests_guard::bench;
     use crate::diagnose::{DiagnoseOptions, LabelledRecording};
@@ -109,14 +107,7 @@ mod tests {
         let model = bench();
         let options = DiagnoseOptions::default();
         let observed = observe(&two_stations(), 8.0).expect("observed");
-        let cx = Context {
-            held_out: held_out(&observed),
-            user: &model,
-            plain: plain_parameters(&model),
-            options: &options,
-            observed,
-            prior_weight: 1.0,
-        };
+        let cx = Context::new(&model, &options, observed);
         let list = candidates(&model, &["engine".into(), "brake".into()], false);
         let artifact = list
             .iter()

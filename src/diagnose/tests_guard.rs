@@ -4,11 +4,9 @@
 use super::LabelledRecording;
 use super::candidates::candidates;
 use super::context::{Context, Evaluated};
-use super::holdout::held_out;
 use super::observe::observe;
 use super::report::Report;
 use super::screen::Screened;
-use super::surrogate::plain_parameters;
 use super::tests::steady;
 use super::{DiagnoseError, DiagnoseOptions, decide, guard};
 use crate::model::{Model, parse_model};
@@ -30,7 +28,7 @@ pub(super) fn recordings() -> Vec<LabelledRecording> {
 
 /// A model's amplitudes: the measured ones × (1 + `fitted`) on the fitted observations
 /// and × (1 + `held`) on the held-out ones.
-pub(super) fn evaluated(cx: &Context, fitted: f64, held: f64, value: Option<f64>) -> Evaluated {
+fn evaluated(cx: &Context, fitted: f64, held: f64, value: Option<f64>) -> Evaluated {
     let simulated = cx
         .observed
         .observations
@@ -50,15 +48,7 @@ fn with_context(check: impl Fn(&Context)) {
     let model = bench();
     let options = DiagnoseOptions::default();
     let observed = observe(&recordings(), 8.0).expect("observed");
-    let cx = Context {
-        held_out: held_out(&observed),
-        user: &model,
-        plain: plain_parameters(&model),
-        options: &options,
-        observed,
-        prior_weight: 1.0,
-    };
-    check(&cx);
+    check(&Context::new(&model, &options, observed));
 }
 
 /// A recalibration that makes the held-out data worse (the control: 5.00 →

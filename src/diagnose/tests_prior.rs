@@ -4,31 +4,22 @@
 
 use super::DiagnoseOptions;
 use super::context::Context;
-use super::holdout::held_out;
 use super::observe::observe;
-use super::surrogate::plain_parameters;
 use super::tests_guard::{bench, recordings};
 
 /// The norm √Σ(ln f)² of the plain fit's best proposal and its fitted χ²/N, with the
-/// prior weighed by `w`,
-/// from a model whose amplitudes are the measured ones 40 % too high and too low by turns
-/// (a misfit of the model's form, which no plain parameter removes: moving them buys
-/// little of it).
-fn largest_change(w: f64) -> (f64, f64) {
+/// prior weighed by `w`, from a model whose amplitudes are the measured ones 40 % too high
+/// and too low by turns (a misfit of the model's form, which no plain parameter removes:
+/// moving them buys little of it).
+fn plain_change(w: f64) -> (f64, f64) {
     let model = bench();
     let options = DiagnoseOptions {
         threads: 1,
         ..DiagnoseOptions::default()
     };
     let observed = observe(&recordings(), 8.0).expect("observed");
-    let cx = Context {
-        held_out: held_out(&observed),
-        user: &model,
-        plain: plain_parameters(&model),
-        options: &options,
-        observed,
-        prior_weight: w,
-    };
+    let mut cx = Context::new(&model, &options, observed);
+    cx.prior_weight = w;
     let simulated = cx
         .observed
         .observations
@@ -51,10 +42,10 @@ fn largest_change(w: f64) -> (f64, f64) {
 /// the floor's weight matters.
 #[test]
 fn a_heavier_prior_keeps_the_plain_fit_near_the_users_values() {
-    let (free, floor) = largest_change(1.0);
+    let (free, floor) = plain_change(1.0);
     assert!(free > 0.1, "weight 1: √Σ(ln f)² = {free}");
     assert!(floor > 10.0, "weight 1: fitted χ²/N {floor}");
-    let (held, _) = largest_change(floor.sqrt());
+    let (held, _) = plain_change(floor.sqrt());
     assert!(
         held < 0.5 * free,
         "weight √{floor:.0}: {held} against {free}"
