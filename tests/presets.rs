@@ -21,3 +21,17 @@ fn presets_are_embedded_parse_and_round_trip() {
         assert!(!model.expect.is_empty(), "{} has [expect] checks", p.name);
     }
 }
+
+/// `torsim --help` names every shipped preset, so a preset added to `PRESETS` cannot be
+/// left out of the help a user reads (two-inertia, three-inertia and genset-20dof were).
+#[test]
+fn help_names_every_preset() {
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_torsim"))
+        .arg("--help")
+        .output()
+        .unwrap();
+    let help = String::from_utf8(out.stdout).unwrap();
+    for p in PRESETS {
+        assert!(help.contains(p.name), "`torsim --help` omits preset {}", p.name);
+    }
+}

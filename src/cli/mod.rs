@@ -28,8 +28,9 @@ use error::CliError;
 /// Torsional vibration of engine drivelines with highly flexible rubber couplings.
 ///
 /// MODEL is a model file (spec/model-format.md) or `preset:NAME` for a preset shipped in
-/// the binary (cng-genset, diagnosis-bench, test-rig-45sh, test-rig-60sh, test-rig-70sh,
-/// test-rig-mod1, test-rig-mod2, test-rig-mod3).
+/// the binary (cng-genset, genset-20dof, diagnosis-bench, two-inertia, three-inertia,
+/// test-rig-45sh, test-rig-60sh, test-rig-70sh, test-rig-mod1, test-rig-mod2,
+/// test-rig-mod3).
 #[derive(Debug, Parser)]
 #[command(name = "torsim", version, args_conflicts_with_subcommands = true)]
 pub struct Cli {
