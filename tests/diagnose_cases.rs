@@ -117,7 +117,39 @@ fn check(case: &str) -> Report {
         );
     }
     assert!(!report.fit.validated_on.is_empty());
+    check_set_aside(case, &report);
     report
+}
+
+/// Every effect that scores better than the verdict, or that the verdict `parameter_error`
+/// passed over, says why it is not the verdict; the verdict's row never does.
+fn check_set_aside(case: &str, report: &Report) {
+    let verdict = report.verdict.effect.as_str();
+    let score_of = |effect: &str| {
+        report
+            .candidates
+            .iter()
+            .find(|c| c.effect == effect)
+            .map(|c| c.score)
+    };
+    let verdict_score = score_of(verdict).expect("the verdict has a row");
+    for c in &report.candidates {
+        if c.effect == verdict {
+            assert!(c.set_aside.is_none(), "case {case}: the verdict set aside");
+            continue;
+        }
+        let effect = !matches!(c.effect.as_str(), "none" | "parameter_error");
+        let passed_over = c.score < verdict_score || verdict == "parameter_error";
+        if effect && c.rejected.is_none() && passed_over {
+            assert!(
+                c.set_aside.is_some(),
+                "case {case}: {} (score {}) under the verdict {verdict} (score \
+                 {verdict_score}) without a reason",
+                c.effect,
+                c.score
+            );
+        }
+    }
 }
 
 #[test]

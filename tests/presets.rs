@@ -32,6 +32,10 @@ fn help_names_every_preset() {
         .unwrap();
     let help = String::from_utf8(out.stdout).unwrap();
     for p in PRESETS {
-        assert!(help.contains(p.name), "`torsim --help` omits preset {}", p.name);
+        assert!(
+            help.contains(p.name),
+            "`torsim --help` omits preset {}",
+            p.name
+        );
     }
 }

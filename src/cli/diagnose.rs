@@ -291,6 +291,11 @@ fn summary(report: &Report, model_name: &str) -> String {
     } else {
         text += &table(&header, &rows);
     }
+    for c in &report.candidates {
+        if let Some(why) = &c.set_aside {
+            outln!(text, "  {} set aside: {why}", c.effect);
+        }
+    }
     let worst = report.mismatches.len().min(10);
     if worst == 0 {
         outln!(text, "\nno mismatches listed");
@@ -369,6 +374,7 @@ mod tests {
             verified: true,
             rejected: None,
             rejected_steps: Vec::new(),
+            set_aside: None,
         };
         let mismatch = |z: f64| Mismatch {
             recording: "Regime A".into(),

@@ -176,6 +176,7 @@ mod tests {
                 verified: true,
                 rejected: None,
                 rejected_steps: Vec::new(),
+                set_aside: None,
             }],
             fit: Fit {
                 metric: String::new(),

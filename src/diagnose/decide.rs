@@ -100,6 +100,7 @@ pub fn report(
                 verified: s.verified && s.rejected.is_none(),
                 rejected: s.rejected.clone(),
                 rejected_steps: s.rejected_steps.clone(),
+                set_aside: None,
             },
             evaluated: e,
             candidate: c,
@@ -132,6 +133,7 @@ pub fn report(
         verified: true,
         rejected: None,
         rejected_steps: plain_rejected.to_vec(),
+        set_aside: None,
     };
     let none_row = super::report::Candidate {
         effect: "none".into(),
@@ -145,6 +147,7 @@ pub fn report(
         verified: true,
         rejected: None,
         rejected_steps: Vec::new(),
+        set_aside: None,
     };
     // A branch must clear its own, larger margin ([`super::branch::BRANCH_MARGIN`]); one
     // short of it (or tuned to the band's edge) is no evidence against the effects behind
@@ -276,8 +279,28 @@ pub fn report(
             plain,
         )
     };
-    let mut rows: Vec<super::report::Candidate> =
-        candidates.iter().map(|c| c.out.clone()).collect();
+    let against = super::aside::Against {
+        plain,
+        plain_score,
+        before,
+    };
+    let mut rows: Vec<super::report::Candidate> = candidates
+        .iter()
+        .map(|c| {
+            let mut out = c.out.clone();
+            if out.rejected.is_none() && out.effect != verdict.effect {
+                let row = super::aside::Row {
+                    candidate: c.candidate,
+                    evaluated: c.evaluated,
+                    score: out.score,
+                    after: out.residual_after,
+                    verified: out.verified,
+                };
+                out.set_aside = super::aside::reason(cx, &row, &against);
+            }
+            out
+        })
+        .collect();
     rows.push(plain_row);
     rows.push(none_row);
     rows.sort_by(rank);

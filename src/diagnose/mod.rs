@@ -35,6 +35,7 @@
 //! - [`report`]: the JSON of the spec; [`html`] the page for a person.
 
 pub mod accept;
+mod aside;
 pub mod branch;
 pub mod candidates;
 pub mod candidates_amplitude;

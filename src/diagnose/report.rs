@@ -166,6 +166,13 @@ pub struct Candidate {
     /// taken (the fit kept its previous point), each with the reason. Left out when none.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub rejected_steps: Vec<String>,
+    /// Extension (issue 14): why a candidate that was fitted and not rejected is not the
+    /// verdict, in the words of the rule that passed it over, e.g. `"beats the plain
+    /// parameters' score by 12 %, short of the 15 % new physics must show on held-out
+    /// data"` ([`super::aside`]). Left out of the JSON for the verdict, the plain and
+    /// `none` rows, and a candidate that only lost on score.
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub set_aside: Option<String>,
 }
 
 /// Extension: an effect not fitted, and why (its signature is absent from the data).

@@ -251,7 +251,14 @@ fn candidate_cells(rank: usize, c: &Candidate) -> String {
                 "screening (estimate)"
             }
         ),
-        format!(r#"<td class="small">{}</td>"#, escape(&c.signature)),
+        format!(
+            r#"<td class="small">{}{}</td>"#,
+            escape(&c.signature),
+            c.set_aside.as_ref().map_or(String::new(), |why| format!(
+                "<br><b>Set aside:</b> {}",
+                escape(why)
+            ))
+        ),
     ]
     .concat()
 }

@@ -31,6 +31,7 @@ fn candidate(effect: &str, score: f64) -> Candidate {
         verified: true,
         rejected: None,
         rejected_steps: Vec::new(),
+        set_aside: None,
     }
 }
 

@@ -76,6 +76,7 @@ pub(super) fn report() -> Report {
         verified: true,
         rejected: None,
         rejected_steps: Vec::new(),
+        set_aside: None,
     };
     let cell = |station: &str, order: f64, speed_rpm: f64, z: f64| MapCell {
         recording: "Regime A".into(),

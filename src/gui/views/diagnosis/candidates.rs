@@ -1,6 +1,7 @@
 //! The candidates table: every effect tried, verdict first then best first, with its
 //! fitted parameter count, χ²/N on the data the fit used and on the held-out data before
-//! and after, and the score that ranked it; the verdict's row highlighted.
+//! and after, and the score that ranked it; the verdict's row highlighted, and a
+//! candidate the decision passed over marked "set aside" with the rule's reason on hover.
 
 use crate::gui::session::diagnosis::finished::{sig4, value_text};
 use crate::gui::views::diagnosis::verdict::VERDICT_COLOR;
@@ -69,11 +70,18 @@ fn table_ui(report: &Report, verdict: &str, ui: &mut Ui) {
                         t
                     }
                 };
-                ui.label(cell(if is_verdict {
-                    "verdict".into()
-                } else {
-                    String::new()
-                }));
+                match (&c.set_aside, is_verdict) {
+                    (_, true) => {
+                        ui.label(cell("verdict".into()));
+                    }
+                    (Some(why), false) => {
+                        ui.label(RichText::new("set aside").weak())
+                            .on_hover_text(why.as_str());
+                    }
+                    (None, false) => {
+                        ui.label("");
+                    }
+                }
                 if c.verified {
                     ui.label(cell(c.effect.clone()));
                 } else {
