@@ -141,4 +141,24 @@ mod tests {
             assert_eq!(margin(c), BRANCH_MARGIN);
         }
     }
+
+    /// A placed resonance is fitted within the trust factor either side of where it is
+    /// (and never past its band); an unplaced one, over its whole band.
+    #[test]
+    fn a_placed_branch_moves_within_its_trust_region() {
+        use crate::diagnose::context::{RESONANCE_TRUST, resonance_trust};
+        let text = "format = 1\nname = \"two\"\n[[inertia]]\nname = \"a\"\ninertia = 1\n\
+                    [[inertia]]\nname = \"b\"\ninertia = 0.5\n[[connection]]\nkind = \
+                    \"shaft\"\nfrom = \"a\"\nto = \"b\"\nstiffness = 1e5\n";
+        let model = parse_model(text, "two.toml").unwrap();
+        let c = &branch_candidates(&model, [7.2, 300.0])[0];
+        let whole = resonance_trust(c, None);
+        assert_eq!((whole.lo, whole.hi), (7.2, 300.0));
+        let placed = resonance_trust(c, Some(49.6));
+        assert!((placed.lo - 49.6 / RESONANCE_TRUST).abs() < 1e-12);
+        assert!((placed.hi - 49.6 * RESONANCE_TRUST).abs() < 1e-12);
+        // Near the band's edge the band still bounds it.
+        assert_eq!(resonance_trust(c, Some(8.0)).lo, 7.2);
+        assert!(placed.log);
+    }
 }

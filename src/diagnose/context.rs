@@ -309,7 +309,7 @@ pub const RESONANCE_TRUST: f64 = 1.259_921_049_894_873;
 
 /// The bounds a fit of `c`'s parameter keeps to: its own, narrowed for a resonance
 /// already placed (`value`) to [`RESONANCE_TRUST`] either side of it.
-fn resonance_trust(c: &Candidate, value: Option<f64>) -> Bounds {
+pub(super) fn resonance_trust(c: &Candidate, value: Option<f64>) -> Bounds {
     let mut b = c.param.bounds();
     if let (true, Some(v)) = (c.param.resonance, value)
         && v > 0.0
