@@ -16,20 +16,7 @@ use super::branch;
 use super::candidates::Candidate;
 use super::context::{Context, Evaluated};
 use super::guard;
-
-/// What the rules need of one candidate row.
-pub struct Row<'a> {
-    /// The candidate.
-    pub candidate: &'a Candidate,
-    /// Its fitted point.
-    pub evaluated: &'a Evaluated,
-    /// Its score (held-out χ²/N plus the parameter penalty).
-    pub score: f64,
-    /// Its held-out χ²/N.
-    pub after: f64,
-    /// Scored in the time domain.
-    pub verified: bool,
-}
+use super::report;
 
 /// The plain fit and the user's model, as the rules compare against them.
 pub struct Against<'a> {
@@ -41,17 +28,23 @@ pub struct Against<'a> {
     pub before: f64,
 }
 
-/// The first rule that `row` fails, as a sentence; `None` when it passes them all (it
-/// may still have lost on score to a better candidate).
-pub fn reason(cx: &Context, row: &Row, against: &Against) -> Option<String> {
-    let c = row.candidate;
+/// The first rule that candidate `c`, fitted to `evaluated` and reported as `row`, fails,
+/// as a sentence; `None` when it passes them all (it may still have lost on score to a
+/// better candidate).
+pub fn reason(
+    cx: &Context,
+    c: &Candidate,
+    evaluated: &Evaluated,
+    row: &report::Candidate,
+    against: &Against,
+) -> Option<String> {
     if !row.verified {
         return Some(
             "only screened on the linear model: not checked in the time domain".to_string(),
         );
     }
-    let margin = branch::margin(c);
-    if row.score >= (1.0 - margin) * against.plain_score {
+    if !branch::clears_margin(c, row.score, against.plain_score) {
+        let margin = branch::margin(c);
         let gain = 1.0 - row.score / against.plain_score;
         let what = if branch::is_branch(c) {
             "a local mode searched at every node"
@@ -69,8 +62,8 @@ pub fn reason(cx: &Context, row: &Row, against: &Against) -> Option<String> {
             "scores no better than the plain parameters alone".to_string()
         });
     }
-    if !branch::inside(c, row.evaluated.value) {
-        let v = row.evaluated.value.unwrap_or(f64::NAN);
+    if !branch::inside(c, evaluated.value) {
+        let v = evaluated.value.unwrap_or(f64::NAN);
         return Some(format!(
             "tuned to the edge of the excited band ({v:.1} Hz of {:.1}–{:.1} Hz): no \
              resonance inside the band, only inertia or stiffness, which the plain \
@@ -78,18 +71,18 @@ pub fn reason(cx: &Context, row: &Row, against: &Against) -> Option<String> {
             c.param.lo, c.param.hi
         ));
     }
-    if !super::sensor_local::local(cx, c, against.plain, row.evaluated) {
+    if !super::sensor_local::local(cx, c, against.plain, evaluated) {
         return Some(
             "the other stations see the same mismatch in the same runs and orders: a \
              sensor shows its fault at its own station only"
                 .to_string(),
         );
     }
-    if !guard::improves(against.before, row.after, guard::n_held(cx)) {
+    if !guard::improves(against.before, row.residual_after, guard::n_held(cx)) {
         return Some(format!(
             "its held-out χ²/N ({:.2}) does not improve on the user's model's ({:.2}) by \
              more than chance",
-            row.after, against.before
+            row.residual_after, against.before
         ));
     }
     None

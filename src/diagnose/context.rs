@@ -222,7 +222,7 @@ impl Context<'_> {
         let mut bounds = vec![PLAIN_BOUNDS; free.len()];
         if let Some(c) = candidate {
             start.push(at.value.unwrap_or(c.param.start));
-            bounds.push(resonance_trust(c, at.value));
+            bounds.push(super::branch::fit_bounds(c, at.value));
         }
         let correction = self.correction(at);
         let predict = |x: &[f64]| -> Option<Vec<f64>> {
@@ -295,29 +295,6 @@ impl Context<'_> {
             .flatten()
             .min_by(|a, b| a.2.total_cmp(&b.2))
     }
-}
-
-/// How far one surrogate fit may move a resonance it starts from (a factor, either way):
-/// two [`super::candidates::RESONANCE_START_STEP`]s, 26 %. The surrogate is the linear
-/// model plus the time domain's correction at the starting point, and that correction
-/// holds only near it: it carries the resonance's run-up passage where the resonance
-/// was. Moved further, the surrogate is wrong, and a fit jumped along it. Validation case
-/// 1040: a local mode's second round, from 49.6 Hz (the truth 51.8 Hz), went to 7.2 Hz,
-/// the band's edge, where the time domain then settled. Rounds still move a resonance
-/// further, a factor this large each.
-pub const RESONANCE_TRUST: f64 = 1.259_921_049_894_873;
-
-/// The bounds a fit of `c`'s parameter keeps to: its own, narrowed for a resonance
-/// already placed (`value`) to [`RESONANCE_TRUST`] either side of it.
-pub(super) fn resonance_trust(c: &Candidate, value: Option<f64>) -> Bounds {
-    let mut b = c.param.bounds();
-    if let (true, Some(v)) = (c.param.resonance, value)
-        && v > 0.0
-    {
-        b.lo = b.lo.max(v / RESONANCE_TRUST);
-        b.hi = b.hi.min(v * RESONANCE_TRUST);
-    }
-    b
 }
 
 /// Start values to try for a parameter: its start and, spread over its range, values a

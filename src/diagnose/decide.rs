@@ -155,7 +155,7 @@ pub fn report(
     // (2.37) and hysteretic damping (2.40) both beat the plain fit (3.21) by 25 %, and the
     // branch's shortfall named `parameter_error`.
     let clears_own_margin = |c: &Candidate_| {
-        c.out.score < (1.0 - super::branch::margin(c.candidate)) * plain_score
+        super::branch::clears_margin(c.candidate, c.out.score, plain_score)
             && super::branch::inside(c.candidate, c.evaluated.value)
     };
     // A sensor artifact whose mismatch the other stations see too is set aside as well
@@ -289,14 +289,7 @@ pub fn report(
         .map(|c| {
             let mut out = c.out.clone();
             if out.rejected.is_none() && out.effect != verdict.effect {
-                let row = super::aside::Row {
-                    candidate: c.candidate,
-                    evaluated: c.evaluated,
-                    score: out.score,
-                    after: out.residual_after,
-                    verified: out.verified,
-                };
-                out.set_aside = super::aside::reason(cx, &row, &against);
+                out.set_aside = super::aside::reason(cx, c.candidate, c.evaluated, &out, &against);
             }
             out
         })
