@@ -85,12 +85,15 @@ const VISCOUS_ABOVE: f64 = 3.0;
 /// The time domain's settings for simulating `run` (or a part of it whose highest speed
 /// is `top_speed_rpm`) to compare orders up to `max_order`: its load, output at
 /// [`OVERSAMPLING`] times the recording's rate, settling as long as the slowest mode's
-/// decay time `decay_s` asks ([`super::settling`]).
+/// decay time `decay_s` asks ([`super::settling`]): at most [`super::settling::settle_s`],
+/// and, when `from_rest` (a run that starts on its periodic state, not on a lead-in of
+/// the ramp), at least [`super::settling::min_settle_s`].
 pub(super) fn run_options(
     run: &Run,
     max_order: f64,
     top_speed_rpm: f64,
     decay_s: Option<f64>,
+    from_rest: bool,
 ) -> RunOptions {
     let compared_hz = max_order * top_speed_rpm / 60.0;
     RunOptions {
@@ -98,6 +101,11 @@ pub(super) fn run_options(
         rate_hz: OVERSAMPLING * run.rate_hz,
         settle_tolerance: SETTLE_TOLERANCE,
         max_settle_s: settling::settle_s(decay_s, MAX_SETTLE_S),
+        min_settle_s: if from_rest {
+            settling::min_settle_s(decay_s)
+        } else {
+            0.0
+        },
         rtol: RTOL,
         min_steps_per_cycle: MIN_STEPS_PER_CYCLE,
         viscous_above_hz: Some(VISCOUS_ABOVE * compared_hz),
@@ -157,7 +165,7 @@ fn predict_run(
     let (speed_rpm, duration_s) =
         steady_record(model, run).ok_or("a run-up is simulated by segments")?;
     let run_spec = crate::recording::Run::steady(speed_rpm, duration_s);
-    let options = run_options(run, max_order, speed_rpm, decay_s);
+    let options = run_options(run, max_order, speed_rpm, decay_s, true);
     let sim = simulate(model, run_spec, options, &mut |_| true).map_err(|e| e.to_string())?;
     let rec = station_recording(&sim, run, RecKind::Steady)?;
     let analysis_opts = analysis_options(max_order);

@@ -121,7 +121,11 @@ pub fn predict_segment(
         from_rpm + slope * end,
         end - start,
     );
-    let options = super::forward::run_options(run, max_order, from_rpm.max(to_rpm), seg.decay_s);
+    // Only the first segment starts where nothing before it has settled the start; a later
+    // one's lead-in on the ramp does that ([`super::settling::lead_s`]).
+    let first = seg.from_s <= 0.0;
+    let options =
+        super::forward::run_options(run, max_order, from_rpm.max(to_rpm), seg.decay_s, first);
     let sim = simulate(model, run_spec, options, &mut |_| true).map_err(|e| e.to_string())?;
     let rec = super::forward::station_recording(&sim, run, RecKind::RunUp)?;
     let pad = PAD_S.min(lead);

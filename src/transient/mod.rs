@@ -22,6 +22,7 @@ pub mod forces;
 pub mod observe;
 mod periodic_start;
 pub mod plant;
+mod pressure;
 mod record;
 pub mod ros2;
 pub mod run;

@@ -12,9 +12,6 @@ use crate::physics::distributed::connection_rows;
 use crate::physics::{OperatingPoint, System, engine};
 use crate::rubber::MaxwellChain;
 
-/// Samples of the cylinder pressure table per working cycle (0.1° for a 4-stroke).
-const PRESSURE_SAMPLES: usize = 7200;
-
 /// A rubber stage in the time domain (seed 000 eq. 1–2, 10–15 with a Maxwell chain).
 #[derive(Debug, Clone)]
 pub struct RubberPlant {
@@ -130,7 +127,8 @@ pub struct EnginePlant {
     pub oscillating_mass_kg: f64,
     /// Working cycle, rad.
     pub cycle_rad: f64,
-    /// Gauge pressure in Pa on a uniform grid over the cycle from firing TDC.
+    /// Gauge pressure in Pa on a uniform grid over the cycle from firing TDC, through
+    /// order 48 ([`super::pressure`]).
     pub pressure_pa: Vec<f64>,
     /// The cylinders.
     pub cylinders: Vec<Cylinder>,
@@ -351,15 +349,7 @@ impl Plant {
         }
         let engine = model.engine.as_ref().map(|e| {
             let cycle_rad = e.cycle_deg().to_radians();
-            let pressure_pa = (0..PRESSURE_SAMPLES)
-                .map(|k| {
-                    engine::pressure_bar(
-                        e,
-                        load,
-                        e.cycle_deg() * k as f64 / PRESSURE_SAMPLES as f64,
-                    ) * 1.0e5
-                })
-                .collect();
+            let pressure_pa = super::pressure::cycle_table_pa(e, load);
             let cylinders: Vec<Cylinder> = e
                 .firing_angles_or_even_deg()
                 .iter()
