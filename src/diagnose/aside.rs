@@ -9,7 +9,8 @@
 //! plain fit ([`super::decide::EFFECT_MARGIN`], a branch's own
 //! [`super::branch::BRANCH_MARGIN`]), a branch inside the excited band
 //! ([`super::branch::inside`]), a sensor artifact's locality ([`super::sensor_local`]) and
-//! the held-out guard ([`super::guard`]). The margin is checked before the band and the
+//! the held-out guard ([`super::guard`]), and an effect fitted to its own absence
+//! ([`super::candidates::Param::is_absent`]). The margin is checked before the band and the
 //! locality: a candidate that gains nothing is named for that, not for where it settled.
 
 use super::branch;
@@ -61,6 +62,14 @@ pub fn reason(
         } else {
             "scores no better than the plain parameters alone".to_string()
         });
+    }
+    if c.param.is_absent(evaluated.value) {
+        return Some(format!(
+            "fitted to no effect ({} = {:.4}, where the effect is absent): what it gains \
+             over the plain parameters is the path its fit took, not the effect",
+            c.param.key,
+            evaluated.value.unwrap_or(f64::NAN)
+        ));
     }
     if !branch::inside(c, evaluated.value) {
         let v = evaluated.value.unwrap_or(f64::NAN);

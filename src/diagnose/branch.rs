@@ -64,6 +64,7 @@ pub fn branch_candidates(model: &Model, band_hz: [f64; 2]) -> Vec<Candidate> {
                 hi,
                 log: true,
                 resonance: true,
+                absent_at: None,
             },
             artifact_gains: None,
         })

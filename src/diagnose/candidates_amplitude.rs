@@ -97,6 +97,7 @@ pub fn amplitude_param(x_mm: Option<f64>) -> Param {
         hi,
         log: false,
         resonance: false,
+        absent_at: Some(0.0),
     }
 }
 

@@ -142,6 +142,7 @@ mod tests {
                 hi,
                 log: false,
                 resonance: false,
+                absent_at: None,
             },
             artifact_gains: None,
         }
