@@ -86,14 +86,14 @@ const VISCOUS_ABOVE: f64 = 3.0;
 /// is `top_speed_rpm`) to compare orders up to `max_order`: its load, output at
 /// [`OVERSAMPLING`] times the recording's rate, settling as long as the slowest mode's
 /// decay time `decay_s` asks ([`super::settling`]): at most [`super::settling::settle_s`],
-/// and, when `from_rest` (a run that starts on its periodic state, not on a lead-in of
+/// and, when `no_lead_in` (a run that starts on its periodic state, not on a lead-in of
 /// the ramp), at least [`super::settling::min_settle_s`].
 pub(super) fn run_options(
     run: &Run,
     max_order: f64,
     top_speed_rpm: f64,
     decay_s: Option<f64>,
-    from_rest: bool,
+    no_lead_in: bool,
 ) -> RunOptions {
     let compared_hz = max_order * top_speed_rpm / 60.0;
     RunOptions {
@@ -101,7 +101,7 @@ pub(super) fn run_options(
         rate_hz: OVERSAMPLING * run.rate_hz,
         settle_tolerance: SETTLE_TOLERANCE,
         max_settle_s: settling::settle_s(decay_s, MAX_SETTLE_S),
-        min_settle_s: if from_rest {
+        min_settle_s: if no_lead_in {
             settling::min_settle_s(decay_s)
         } else {
             0.0

@@ -73,14 +73,13 @@ pub fn settle_s(decay_s: Option<f64>, floor_s: f64) -> f64 {
 /// `[0, MAX_LEAD_S]` (0 when unknown).
 ///
 /// The time domain's cycle-to-cycle test ([`crate::transient::RunOptions::settle_tolerance`],
-/// 2e-3 of the largest vibration here) passes a start transient of the slowest mode at a
-/// few 0.1 % of the main order, and that transient leaks into the orders the engine
+/// 2e-3 of the largest vibration here) passes a start transient of the slowest mode at
+/// about 0.1 % of the main order, and that transient leaks into the orders the engine
 /// hardly excites, where the bench measures only its noise. Benchtruth control 2047 (a
-/// six-cylinder engine, mode 1 at 15.6 Hz with 1.3 % damping, 2250 rpm) settled in 7–21
-/// cycles and then showed 0.005–0.073 rpm of order 0.5 at the crank depending on the
-/// plain parameters' fourth digit, where the bench measured 0.001 ± 0.001 rpm: a z of
-/// up to 65 that decided the verdict. Settled for the mode's 5.3 decay times the start
-/// transient is below the amplitude floor of the largest order.
+/// six-cylinder engine, mode 1 at 15.7 Hz with 1.3 % damping) settled at 2250 rpm in 10
+/// cycles and kept 0.0044 rpm of order 0.5 at the crank, where the bench measured
+/// 0.001 ± 0.001 rpm; settled for the mode's 5.3 decay times (4.2 s) it keeps 0.00004 rpm
+/// (`tests/transient_engine_orders.rs`).
 pub fn min_settle_s(decay_s: Option<f64>) -> f64 {
     decay_s.map_or(0.0, |tau| (DECAYS * tau).clamp(0.0, MAX_LEAD_S))
 }
