@@ -8,31 +8,16 @@
 //! (`tests/data/models/six-cylinder-half-order.toml`): six cylinders firing every 120°,
 //! mode 1 at 15.7 Hz with 1.3 % damping (a quality factor of 39), so order 0.5 is resonant
 //! near 1870 rpm. Before the pressure curve was integrated as its Fourier series through
-//! order 48 (`src/transient/pressure.rs`), the crank's order 0.5 came out at 0.036–0.048
+//! order 48 (`src/transient/pressure.rs`), the crank's order 0.5 came out at 0.036–0.052
 //! rpm at the diagnosis' settings below; before steady runs settled for the slowest mode's
 //! decay (`diagnose::settling::min_settle_s`), 0.0044 rpm at 2250 rpm.
 
-use num_complex::Complex64;
-use std::f64::consts::TAU;
 use torsim::model::parse_model;
 use torsim::recording::Run;
 use torsim::transient::{RunOptions, simulate};
 
-/// Zero-to-peak amplitude of order `q` over the whole cycles of a steady record sampled
-/// at `rate_hz` (a plain DFT at one bin: a cycle is a whole number of samples here).
-fn order_amplitude(signal: &[f64], rate_hz: f64, speed_rpm: f64, q: f64) -> f64 {
-    let omega = q * speed_rpm * TAU / 60.0;
-    let period_s = 2.0 * 60.0 / speed_rpm;
-    let cycles = (signal.len() as f64 / rate_hz / period_s + 1e-9).floor();
-    let n = (cycles * period_s * rate_hz).round() as usize;
-    let mean = signal[..n].iter().sum::<f64>() / n as f64;
-    let sum: Complex64 = signal[..n]
-        .iter()
-        .enumerate()
-        .map(|(k, v)| (v - mean) * Complex64::from_polar(1.0, -omega * k as f64 / rate_hz))
-        .sum();
-    2.0 * sum.norm() / n as f64
-}
+mod transient_support;
+use transient_support::order_amplitude;
 
 /// The crank's orders 0.5, 1 and 3 at `speed_rpm`, eight cycles recorded after settling
 /// at the diagnosis' settings (`src/diagnose/forward.rs`: rtol 1e-4, 90 steps a cycle,
