@@ -16,10 +16,13 @@ const SEEDS: [u64; 4] = [11, 5, 13, 20];
 #[test]
 fn a_fixed_set_of_independent_cases_is_named_right() {
     let torsim = Path::new(env!("CARGO_BIN_EXE_torsim"));
-    let root = std::env::temp_dir().join(format!("torsim-bt-fixed-{}", std::process::id()));
+    let root = tempfile::Builder::new()
+        .prefix("torsim-bt-fixed-")
+        .tempdir()
+        .expect("temp dir");
     let mut failures = Vec::new();
     for seed in SEEDS {
-        let row = run_case(torsim, seed, &root.join(format!("case-{seed}")));
+        let row = run_case(torsim, seed, &root.path().join(format!("case-{seed}")));
         let outcome = match row.outcome {
             Ok(o) => o,
             Err(e) => {
@@ -50,6 +53,5 @@ fn a_fixed_set_of_independent_cases_is_named_right() {
             ));
         }
     }
-    let _ = std::fs::remove_dir_all(&root);
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }

@@ -32,8 +32,12 @@ fn sidecar_value(path: &Path, key: &str) -> Option<String> {
 /// Worst relative difference over the orders above 1 rpm (≥ 20× the bench's largest
 /// noise level of 0.05 rpm after averaging) at the recording's stations.
 fn worst_difference(seed: u64) -> f64 {
-    let dir = std::env::temp_dir().join(format!("torsim-bt-none-{seed}-{}", std::process::id()));
-    let files = benchtruth::write_case(seed, Some("none"), &dir).expect("case written");
+    let scratch = tempfile::Builder::new()
+        .prefix(&format!("torsim-bt-none-{seed}-"))
+        .tempdir()
+        .expect("temp dir");
+    let dir = scratch.path();
+    let files = benchtruth::write_case(seed, Some("none"), dir).expect("case written");
     let model = files.model.to_string_lossy().into_owned();
     let mut worst: f64 = 0.0;
     let mut compared = 0;
@@ -80,7 +84,6 @@ fn worst_difference(seed: u64) -> f64 {
         }
     }
     assert!(compared > 0, "seed {seed}: nothing above 1 rpm compared");
-    let _ = std::fs::remove_dir_all(&dir);
     worst
 }
 

@@ -43,7 +43,11 @@ fn modes_json_shape() {
 
 #[test]
 fn campbell_json_shape_and_csv() {
-    let csv = std::env::temp_dir().join(format!("torsim-campbell-{}.csv", std::process::id()));
+    let scratch = tempfile::Builder::new()
+        .prefix("torsim-campbell-")
+        .tempdir()
+        .unwrap();
+    let csv = scratch.path().join("campbell.csv");
     let csv_arg = csv.display().to_string();
     let v = json(&[
         "campbell",
@@ -81,7 +85,6 @@ fn campbell_json_shape_and_csv() {
     let text = std::fs::read_to_string(&csv).unwrap();
     assert!(text.starts_with("speed_rpm,mode_1_hz,order_0.5_hz"));
     assert_eq!(text.lines().count(), 162);
-    let _ = std::fs::remove_file(csv);
 }
 
 #[test]
@@ -166,7 +169,13 @@ fn check_passes_on_shipped_presets_and_fails_on_a_broken_expectation() {
             p["file"]
         );
     }
-    let broken = std::env::temp_dir().join(format!("torsim-broken-{}.toml", std::process::id()));
+    // Removed when dropped.
+    let broken = tempfile::Builder::new()
+        .prefix("torsim-broken-")
+        .suffix(".toml")
+        .tempfile()
+        .unwrap()
+        .into_temp_path();
     let text = std::fs::read_to_string(PathBuf::from(env!("CARGO_MANIFEST_DIR")).join(THREE_DOF))
         .unwrap()
         + "\n[expect]\nmode_hz = [{ mode = 1, min = 100.0, max = 120.0 }]\n";
@@ -180,12 +189,17 @@ fn check_passes_on_shipped_presets_and_fails_on_a_broken_expectation() {
             && stdout.contains("computed mode 1 at 15."),
         "{stdout}"
     );
-    let _ = std::fs::remove_file(broken);
 }
 
 #[test]
 fn bad_input_names_file_line_and_key_with_exit_2() {
-    let bad = std::env::temp_dir().join(format!("torsim-bad-{}.toml", std::process::id()));
+    // Removed when dropped.
+    let bad = tempfile::Builder::new()
+        .prefix("torsim-bad-")
+        .suffix(".toml")
+        .tempfile()
+        .unwrap()
+        .into_temp_path();
     let text = std::fs::read_to_string(PathBuf::from(env!("CARGO_MANIFEST_DIR")).join(THREE_DOF))
         .unwrap()
         .replace("stiffness = 2.0e5", "stiffness = -2.0e5");
@@ -201,7 +215,6 @@ fn bad_input_names_file_line_and_key_with_exit_2() {
         "{stderr}"
     );
     assert!(out.stdout.is_empty());
-    let _ = std::fs::remove_file(bad);
 
     let out = torsim(&["modes", "no/such/file.toml"]);
     assert_eq!(out.status.code(), Some(2));

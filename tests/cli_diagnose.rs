@@ -3,9 +3,11 @@
 //! and `--report` writes the HTML page.
 
 mod run_cli;
+mod scratch;
 use run_cli::{json, torsim};
+use scratch::Scratch;
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 const CASE: &str = "tests/data/diagnosis/none";
 
@@ -21,11 +23,9 @@ fn case_recordings() -> Vec<String> {
     csv
 }
 
-fn temp_dir(test: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("torsim-diagnose-{test}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("create temp dir");
-    dir
+/// A fresh empty directory, removed when the returned guard is dropped.
+fn temp_dir(test: &str) -> Scratch {
+    Scratch::new(&format!("torsim-diagnose-{test}-"))
 }
 
 fn stderr_of(args: &[&str]) -> (Option<i32>, String) {

@@ -4,14 +4,14 @@
 //! SIGTERM.
 
 mod run_cli;
+mod scratch;
 use run_cli::torsim;
-use std::path::{Path, PathBuf};
+use scratch::Scratch;
+use std::path::Path;
 
-fn dir(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("torsim-outputs-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
+/// A fresh empty directory, removed when the returned guard is dropped.
+fn dir(name: &str) -> Scratch {
+    Scratch::new(&format!("torsim-outputs-{name}-"))
 }
 
 /// Every file of `dir` with its bytes.
@@ -155,7 +155,6 @@ fn an_output_that_resolves_to_an_input_is_refused_with_exit_2() {
         assert!(stderr.contains(words), "{args:?}: {stderr}");
         assert_eq!(snapshot(&d), before, "{args:?} changed a file");
     }
-    std::fs::remove_dir_all(&d).unwrap();
 }
 
 #[test]
@@ -183,7 +182,6 @@ fn a_simulate_that_fails_leaves_its_outputs_untouched() {
         String::from_utf8_lossy(&out.stderr)
     );
     assert_eq!(snapshot(&d), before);
-    std::fs::remove_dir_all(&d).unwrap();
 }
 
 #[test]
@@ -215,7 +213,6 @@ fn a_sidecar_that_cannot_be_written_leaves_the_csv_untouched() {
         2,
         "no temporary left"
     );
-    std::fs::remove_dir_all(&d).unwrap();
 }
 
 #[test]
@@ -246,7 +243,6 @@ fn a_csv_changed_after_its_sidecar_is_refused() {
         ),
         "{stderr}"
     );
-    std::fs::remove_dir_all(&d).unwrap();
 }
 
 /// SIGTERM at any moment of a large write: the process ends with 143 (or finished before
@@ -310,5 +306,4 @@ fn sigterm_during_a_write_leaves_no_temporary_and_an_intact_target() {
             "the target is old or whole"
         );
     }
-    std::fs::remove_dir_all(&d).unwrap();
 }

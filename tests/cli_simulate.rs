@@ -8,8 +8,11 @@ use run_cli::{json, torsim};
 /// printed digit: the CSV round-trips the samples exactly.
 #[test]
 fn analyse_of_simulate_csv_gives_back_its_orders() {
-    let dir = std::env::temp_dir().join(format!("torsim-sim-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let scratch = tempfile::Builder::new()
+        .prefix("torsim-sim-")
+        .tempdir()
+        .unwrap();
+    let dir = scratch.path();
     let csv = dir.join("rig.csv").display().to_string();
     let sim = json(&[
         "simulate",
@@ -55,7 +58,6 @@ fn analyse_of_simulate_csv_gives_back_its_orders() {
     }
     let sidecar = std::fs::read_to_string(dir.join("rig.toml")).unwrap();
     assert!(sidecar.contains("kind = \"steady\"") && sidecar.contains("reference = \"engine\""));
-    let _ = std::fs::remove_dir_all(dir);
 }
 
 #[test]

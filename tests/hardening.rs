@@ -66,7 +66,6 @@ fn check(case: &Case) -> Option<String> {
             .unwrap_or_default();
         wrong.push(format!("after: {text}"));
     }
-    let _ = std::fs::remove_dir_all(&dir);
     (!wrong.is_empty()).then(|| {
         format!(
             "{} (torsim {}): {}\n  stderr: {}",

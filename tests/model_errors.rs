@@ -371,8 +371,11 @@ fn a_model_without_nodes_names_the_file() {
 
 #[test]
 fn model_files_not_utf8_name_line_and_offset_and_bom_crlf_are_accepted() {
-    let dir = std::env::temp_dir().join(format!("torsim-model-utf8-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let scratch = tempfile::Builder::new()
+        .prefix("torsim-model-utf8-")
+        .tempdir()
+        .unwrap();
+    let dir = scratch.path();
     let bad = dir.join("latin1.toml");
     let mut bytes = BASE
         .replace("name = \"b\"", "name = \"b\u{e9}\"")
@@ -389,7 +392,6 @@ fn model_files_not_utf8_name_line_and_offset_and_bom_crlf_are_accepted() {
     std::fs::write(&bom, crlf).unwrap();
     let model = torsim::model::read_model_file(&bom).expect("BOM and CRLF");
     assert_eq!(model.inertias.len(), 2);
-    std::fs::remove_dir_all(&dir).ok();
 }
 
 #[test]

@@ -133,16 +133,18 @@ fn defaults_are_omitted() {
 
 #[test]
 fn save_is_atomic_and_reads_back() {
-    let dir = std::env::temp_dir().join(format!("torsim-save-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("temp dir");
+    let scratch = tempfile::Builder::new()
+        .prefix("torsim-save-")
+        .tempdir()
+        .expect("temp dir");
+    let dir = scratch.path();
     let path = dir.join("model.toml");
     std::fs::write(&path, "old contents").expect("write");
     let model = everything();
     save_model_file(&model, &path).expect("saves");
     assert_eq!(read_model_file(&path).expect("reads"), model);
-    let leftovers: Vec<_> = std::fs::read_dir(&dir).expect("dir").collect();
+    let leftovers: Vec<_> = std::fs::read_dir(dir).expect("dir").collect();
     assert_eq!(leftovers.len(), 1, "temporary file left behind");
-    std::fs::remove_dir_all(&dir).expect("cleanup");
 }
 
 #[test]

@@ -7,33 +7,19 @@
 //!   a non-finite number as `null`).
 
 mod proptest_support;
+mod scratch;
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::Command;
-use std::sync::atomic::{AtomicUsize, Ordering};
 
 use proptest::prelude::*;
+use scratch::Scratch;
 use torsim::model::save_model_file;
 use torsim::recording::{sidecar_path, write_recording};
 
 /// A directory of its own under the system temp dir, removed when dropped.
-struct Scratch(PathBuf);
-
-impl Scratch {
-    fn new(tag: &str) -> Self {
-        static NEXT: AtomicUsize = AtomicUsize::new(0);
-        let n = NEXT.fetch_add(1, Ordering::Relaxed);
-        let dir =
-            std::env::temp_dir().join(format!("torsim-proptest-{tag}-{}-{n}", std::process::id()));
-        std::fs::create_dir_all(&dir).expect("scratch dir");
-        Self(dir)
-    }
-}
-
-impl Drop for Scratch {
-    fn drop(&mut self) {
-        let _ = std::fs::remove_dir_all(&self.0);
-    }
+fn scratch_dir(tag: &str) -> Scratch {
+    Scratch::new(&format!("torsim-proptest-{tag}-"))
 }
 
 /// The words a non-finite number leaves in CSV, TOML or JSON text (lowercased).
@@ -124,8 +110,8 @@ proptest! {
                 None => recording.time_s[row] = p.value,
             }
         }
-        let scratch = Scratch::new("write");
-        let csv = scratch.0.join("rec.csv");
+        let scratch = scratch_dir("write");
+        let csv = scratch.join("rec.csv");
         match write_recording(&recording, &csv) {
             Ok(()) => {
                 prop_assert!(poison.is_none(), "a non-finite sample was written: {:?}", poison);
@@ -150,8 +136,8 @@ proptest! {
 
     #[test]
     fn analyse_json_holds_no_nan(case in proptest_support::recording_case()) {
-        let scratch = Scratch::new("analyse");
-        let csv = scratch.0.join("rec.csv");
+        let scratch = scratch_dir("analyse");
+        let csv = scratch.join("rec.csv");
         write_recording(&case.recording(), &csv).expect("a finite recording is written");
         let (ok, stdout, stderr) = run_json(&["analyse", csv.to_str().expect("utf-8"), "--json"]);
         if ok {
@@ -168,8 +154,8 @@ proptest! {
 
     #[test]
     fn modes_json_holds_no_nan(model in proptest_support::model()) {
-        let scratch = Scratch::new("modes");
-        let path = scratch.0.join("model.toml");
+        let scratch = scratch_dir("modes");
+        let path = scratch.join("model.toml");
         save_model_file(&model, &path).expect("writes the model");
         // With a speed: without one, `speed_rpm` is printed as `null` (reported apart).
         let (ok, stdout, stderr) = run_json(&[

@@ -3,7 +3,6 @@
 
 mod synth;
 
-use std::path::PathBuf;
 use synth::{put, temp_dir};
 use torsim::recording::{ChannelKind, Reason, Recording, RecordingError, read_recording};
 
@@ -18,18 +17,18 @@ fn csv(rows: usize) -> String {
     s
 }
 
-/// Writes CSV + sidecar into a fresh directory and reads them.
+/// Writes CSV + sidecar into a fresh directory and reads them (the directory is removed
+/// on return).
 fn read(
     test: &str,
     csv_text: &str,
     sidecar: &str,
     nodes: Option<&[String]>,
-) -> (PathBuf, Result<Recording, RecordingError>) {
+) -> Result<Recording, RecordingError> {
     let dir = temp_dir(test);
     let path = put(&dir, "run-a.csv", csv_text);
     put(&dir, "run-a.toml", sidecar);
-    let result = read_recording(&path, nodes);
-    (path, result)
+    read_recording(&path, nodes)
 }
 
 /// Asserts the error's file (ends with `file`), line and that its message holds `text`.
@@ -42,7 +41,7 @@ fn rejects(
     text: &str,
 ) -> RecordingError {
     let nodes = ["crank".to_string(), "flange".to_string()];
-    let (_, result) = read(test, csv_text, sidecar, Some(&nodes));
+    let result = read(test, csv_text, sidecar, Some(&nodes));
     let e = result.expect_err("must be rejected");
     assert!(e.file.ends_with(file), "{test}: file {} in {e}", e.file);
     assert_eq!(e.line, line, "{test}: {e}");
@@ -53,7 +52,7 @@ fn rejects(
 
 #[test]
 fn reads_a_good_recording() {
-    let (_, r) = read("good", &csv(200), SIDECAR, None);
+    let r = read("good", &csv(200), SIDECAR, None);
     let r = r.expect("reads");
     assert_eq!(r.time_s.len(), 200);
     assert_eq!(r.channels.len(), 2);
@@ -175,7 +174,7 @@ fn csv_errors_name_file_line_and_reason() {
     );
     assert_eq!(e.key.as_deref(), Some("crank_rpm"));
     // A 2-stroke engine needs only 2 revolutions.
-    let (_, r) = read(
+    let r = read(
         "short-2s",
         &csv(150),
         &format!("{SIDECAR}strokes = 2\n"),
@@ -183,7 +182,7 @@ fn csv_errors_name_file_line_and_reason() {
     );
     assert_eq!(r.expect("2-stroke: 3.7 rev is enough").meta.strokes, 2);
     // Without node names any node is accepted.
-    let (_, r) = read(
+    let r = read(
         "any-node",
         &good.replace("flange_rpm", "pulley_rpm"),
         SIDECAR,
@@ -308,7 +307,7 @@ fn csv_at(rows: usize, start_s: f64, time: &dyn Fn(f64, usize) -> String) -> Str
 /// not UTF-8 are refused with the line and byte offset.
 #[test]
 fn bom_is_stripped_and_bad_utf8_located() {
-    let (_, r) = read(
+    let r = read(
         "bom",
         &format!("\u{feff}{}", csv(200)),
         &format!("\u{feff}{SIDECAR}"),
@@ -491,7 +490,7 @@ fn sidecar_is_toml_and_checked_against_the_data() {
     let good = csv(200);
     let inline =
         format!("{SIDECAR}sensors = {{ crank = {{ kind = \"encoder\", lines_per_rev = 360 }} }}\n");
-    let (_, r) = read("inline", &good, &inline, None);
+    let r = read("inline", &good, &inline, None);
     assert_eq!(
         r.expect("inline tables").meta.sensors["crank"].lines_per_rev,
         Some(360)
@@ -507,7 +506,7 @@ fn sidecar_is_toml_and_checked_against_the_data() {
         );
         assert_eq!(e.key.as_deref(), Some("temperature_c"));
     }
-    let (_, r) = read(
+    let r = read(
         "temp-ok",
         &good,
         &format!("{SIDECAR}temperature_c = -40\n"),
@@ -524,7 +523,7 @@ fn sidecar_is_toml_and_checked_against_the_data() {
     );
     assert!(e.to_string().contains("is 1500.0 rpm") && e.to_string().contains("run-a.csv"));
     // Within 10 %: a bench holds its speed to 1–2 %.
-    let (_, r) = read(
+    let r = read(
         "speed-ok",
         &good,
         &SIDECAR.replace("1500.0", "1600.0"),

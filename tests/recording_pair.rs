@@ -2,7 +2,10 @@
 //! the reader; a finished pair reads back identical. The writer is stopped between the
 //! stages in this process, and, for real, in a child process that aborts between them.
 
-use std::path::{Path, PathBuf};
+mod scratch;
+
+use scratch::Scratch;
+use std::path::Path;
 use torsim::recording::{
     Channel, ChannelKind, Recording, RecordingMeta, RunKind, prepare_recording, read_recording,
     write_recording,
@@ -29,11 +32,9 @@ fn recording(seconds: f64, offset_rpm: f64) -> Recording {
     }
 }
 
-fn dir(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("torsim-pair-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
+/// A fresh empty directory, removed when the returned guard is dropped.
+fn dir(name: &str) -> Scratch {
+    Scratch::new(&format!("torsim-pair-{name}-"))
 }
 
 fn names(dir: &Path) -> Vec<String> {
@@ -76,7 +77,6 @@ fn a_writer_stopped_between_the_renames_leaves_a_pair_the_reader_refuses() {
     let first = pending.commit_first().unwrap();
     drop(first); // "killed": the sidecar's temporary goes, the old sidecar stays.
     check_both_outcomes(&dir, &csv);
-    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 /// In the child: writes the pair's first stage and aborts (no destructors, no cleanup).
@@ -110,7 +110,6 @@ fn a_child_process_killed_between_the_renames_leaves_a_pair_the_reader_refuses()
     assert_eq!(left.len(), 1, "{left:?}");
     std::fs::remove_file(dir.join(&left[0])).unwrap();
     check_both_outcomes(&dir, &csv);
-    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 #[test]
@@ -141,5 +140,4 @@ fn a_sidecar_without_the_fingerprint_is_accepted_and_a_bad_one_is_located() {
         e.contains("run.toml:") && e.contains("`csv_sha256`: expected 64 hex digits"),
         "{e}"
     );
-    std::fs::remove_dir_all(&dir).unwrap();
 }

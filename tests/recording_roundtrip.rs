@@ -137,7 +137,8 @@ fn read_speed() {
         channels: vec![col("crank", 0.01), col("es", 0.02), col("bs", 0.03)],
         meta: RecordingMeta::new(RunKind::Steady, "crank"),
     };
-    let path = temp_dir("speed").join("big.csv");
+    let dir = temp_dir("speed");
+    let path = dir.join("big.csv");
     let start = std::time::Instant::now();
     write_recording(&rec, &path).expect("write");
     let written = start.elapsed();

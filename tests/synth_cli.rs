@@ -81,7 +81,6 @@ fn writes_model_recordings_and_truth() {
         std::fs::read_to_string(out.join("c-part.csv")).unwrap(),
         first
     );
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]
@@ -127,5 +126,4 @@ fn bad_input_exits_2_and_says_why() {
         assert!(stderr.contains(needle), "{args:?}: {stderr}");
     }
     assert!(!dir.join("x").exists(), "nothing written on bad input");
-    let _ = std::fs::remove_dir_all(&dir);
 }

@@ -37,12 +37,15 @@ fn sidecar_value(text: &str, key: &str) -> Option<String> {
 }
 
 fn check_case(seed: u64, class: Option<&str>) {
-    let dir = std::env::temp_dir().join(format!(
-        "benchtruth-parse-{seed}-{}-{}",
-        class.unwrap_or("any"),
-        std::process::id()
-    ));
-    let files = benchtruth::write_case(seed, class, &dir).expect("case written");
+    // Removed with its files when the test ends.
+    let dir = tempfile::Builder::new()
+        .prefix(&format!(
+            "benchtruth-parse-{seed}-{}-",
+            class.unwrap_or("any")
+        ))
+        .tempdir()
+        .expect("temp dir");
+    let files = benchtruth::write_case(seed, class, dir.path()).expect("case written");
     assert!(!files.recordings.is_empty());
     let mut steady = 0;
     for csv in &files.recordings {
@@ -88,7 +91,6 @@ fn check_case(seed: u64, class: Option<&str>) {
         steady >= 3,
         "seed {seed}: a campaign has 3–8 steady regimes"
     );
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]

@@ -177,10 +177,15 @@ mod tests {
                 )
             })
             .unwrap();
-        let path = std::env::temp_dir().join(format!("torsim-negf-{}.toml", std::process::id()));
+        // Removed when dropped.
+        let path = tempfile::Builder::new()
+            .prefix("torsim-negf-")
+            .suffix(".toml")
+            .tempfile()
+            .unwrap()
+            .into_temp_path();
         std::fs::write(&path, text).unwrap();
         let (code, e) = refused(&path.display().to_string(), Some(100.0), None, 0.0);
-        std::fs::remove_file(&path).ok();
         assert_eq!(code, 2);
         assert!(
             e.contains("rubber stage `b`: `frequency_poly` gives α_f = -1.0000 at 100.0 Hz"),

@@ -442,15 +442,17 @@ mod tests {
 
     #[test]
     fn the_page_is_written_atomically_or_not_at_all() {
-        let dir = std::env::temp_dir().join(format!("torsim-cli-page-{}", std::process::id()));
-        let _ = std::fs::remove_dir_all(&dir);
-        std::fs::create_dir_all(&dir).unwrap();
+        let scratch = tempfile::Builder::new()
+            .prefix("torsim-cli-page-")
+            .tempdir()
+            .unwrap();
+        let dir = scratch.path();
         let page = dir.join("r.html");
         write_atomic(&page, "<html></html>").unwrap();
         write_atomic(&page, "<html>2</html>").unwrap();
         assert_eq!(std::fs::read_to_string(&page).unwrap(), "<html>2</html>");
         assert_eq!(
-            std::fs::read_dir(&dir).unwrap().count(),
+            std::fs::read_dir(dir).unwrap().count(),
             1,
             "no temporary left"
         );

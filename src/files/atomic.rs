@@ -85,29 +85,31 @@ pub fn write_atomic(path: &Path, bytes: impl AsRef<[u8]>) -> std::io::Result<()>
 mod tests {
     use super::*;
 
-    fn dir(name: &str) -> PathBuf {
-        let dir = std::env::temp_dir().join(format!("torsim-files-{name}-{}", std::process::id()));
-        let _ = std::fs::remove_dir_all(&dir);
-        std::fs::create_dir_all(&dir).unwrap();
-        dir
+    /// A fresh empty directory, removed when the returned guard is dropped.
+    fn dir(name: &str) -> tempfile::TempDir {
+        tempfile::Builder::new()
+            .prefix(&format!("torsim-files-{name}-"))
+            .tempdir()
+            .unwrap()
     }
 
     #[test]
     fn writes_whole_files_and_leaves_a_target_alone_on_failure() {
-        let dir = dir("atomic");
+        let scratch = dir("atomic");
+        let dir = scratch.path();
         let path = dir.join("a.txt");
         write_atomic(&path, "one").unwrap();
         write_atomic(&path, "two").unwrap();
         assert_eq!(std::fs::read_to_string(&path).unwrap(), "two");
         assert!(write_atomic(&dir.join("missing/b.txt"), "x").is_err());
-        let left: Vec<_> = std::fs::read_dir(&dir).unwrap().collect();
+        let left: Vec<_> = std::fs::read_dir(dir).unwrap().collect();
         assert_eq!(left.len(), 1, "no temporary file is left");
-        std::fs::remove_dir_all(&dir).unwrap();
     }
 
     #[test]
     fn a_dropped_temporary_is_removed_and_unregistered() {
-        let dir = dir("dropped");
+        let scratch = dir("dropped");
+        let dir = scratch.path();
         let path = dir.join("a.txt");
         std::fs::write(&path, "old").unwrap();
         let staged = TempFile::write(&path, b"new").unwrap();
@@ -118,21 +120,20 @@ mod tests {
         assert!(!tmp.exists());
         assert!(!super::super::temps::temporaries().contains(&tmp));
         assert_eq!(std::fs::read_to_string(&path).unwrap(), "old");
-        std::fs::remove_dir_all(&dir).unwrap();
     }
 
     #[test]
     fn a_failed_rename_removes_the_temporary() {
-        let dir = dir("rename");
+        let scratch = dir("rename");
+        let dir = scratch.path();
         // A directory as the target: the rename over it fails.
         let target = dir.join("sub");
         std::fs::create_dir_all(target.join("inner")).unwrap();
         assert!(write_atomic(&target, "x").is_err());
-        let names: Vec<_> = std::fs::read_dir(&dir)
+        let names: Vec<_> = std::fs::read_dir(dir)
             .unwrap()
             .map(|e| e.unwrap().file_name())
             .collect();
         assert_eq!(names, vec![std::ffi::OsString::from("sub")]);
-        std::fs::remove_dir_all(&dir).unwrap();
     }
 }

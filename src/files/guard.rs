@@ -167,16 +167,18 @@ impl OutputGuard {
 mod tests {
     use super::*;
 
-    fn dir(name: &str) -> PathBuf {
-        let dir = std::env::temp_dir().join(format!("torsim-guard-{name}-{}", std::process::id()));
-        let _ = std::fs::remove_dir_all(&dir);
-        std::fs::create_dir_all(&dir).unwrap();
-        dir
+    /// A fresh empty directory, removed when the returned guard is dropped.
+    fn dir(name: &str) -> tempfile::TempDir {
+        tempfile::Builder::new()
+            .prefix(&format!("torsim-guard-{name}-"))
+            .tempdir()
+            .unwrap()
     }
 
     #[test]
     fn an_output_resolving_to_an_input_is_refused() {
-        let d = dir("input");
+        let scratch = dir("input");
+        let d = scratch.path();
         let model = d.join("run.toml");
         std::fs::write(&model, "x").unwrap();
         let mut guard = OutputGuard::new();
@@ -196,23 +198,23 @@ mod tests {
         assert!(text.starts_with("--csv "), "{text}");
         assert!(text.contains("run.toml would replace the model"), "{text}");
         assert!(text.contains("its sidecar"), "{text}");
-        std::fs::remove_dir_all(&d).unwrap();
     }
 
     #[test]
     fn a_csv_named_toml_is_its_own_sidecar() {
-        let d = dir("own");
+        let scratch = dir("own");
+        let d = scratch.path();
         let e = OutputGuard::new()
             .recording_output("--csv", &d.join("out.toml"))
             .unwrap_err();
         assert!(matches!(e, OutputError::OwnSidecar { .. }), "{e}");
         assert!(e.to_string().contains("its own sidecar"));
-        std::fs::remove_dir_all(&d).unwrap();
     }
 
     #[test]
     fn inputs_of_a_recording_and_outputs_claimed_twice() {
-        let d = dir("pair");
+        let scratch = dir("pair");
+        let d = scratch.path();
         let csv = d.join("a.csv");
         std::fs::write(&csv, "x").unwrap();
         std::fs::write(d.join("a.toml"), "x").unwrap();
@@ -229,13 +231,13 @@ mod tests {
         assert!(guard.output("--out", &d.join("b.csv")).is_ok());
         let e = guard.output("--out", &d.join("b.csv")).unwrap_err();
         assert!(e.to_string().contains("the output of --out"), "{e}");
-        std::fs::remove_dir_all(&d).unwrap();
     }
 
     #[cfg(unix)]
     #[test]
     fn a_hard_link_is_the_same_file() {
-        let d = dir("link");
+        let scratch = dir("link");
+        let d = scratch.path();
         let model = d.join("m.toml");
         std::fs::write(&model, "x").unwrap();
         let link = d.join("other.csv");
@@ -243,6 +245,5 @@ mod tests {
         let mut guard = OutputGuard::new();
         guard.input("the model", &model);
         assert!(guard.output("--csv", &link).is_err());
-        std::fs::remove_dir_all(&d).unwrap();
     }
 }

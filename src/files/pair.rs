@@ -90,9 +90,11 @@ mod tests {
 
     #[test]
     fn a_sidecar_that_cannot_be_written_leaves_both_targets_and_no_temporary() {
-        let dir = std::env::temp_dir().join(format!("torsim-pair-{}", std::process::id()));
-        let _ = std::fs::remove_dir_all(&dir);
-        std::fs::create_dir_all(&dir).unwrap();
+        let scratch = tempfile::Builder::new()
+            .prefix("torsim-pair-")
+            .tempdir()
+            .unwrap();
+        let dir = scratch.path();
         let csv = dir.join("a.csv");
         std::fs::write(&csv, "old csv").unwrap();
         // The sidecar's folder does not exist: its temporary cannot be created.
@@ -100,7 +102,7 @@ mod tests {
         let e = PreparedPair::prepare(&csv, b"new csv", &sidecar, b"new toml").unwrap_err();
         assert_eq!(e.path, sidecar);
         assert_eq!(std::fs::read_to_string(&csv).unwrap(), "old csv");
-        let names: Vec<_> = std::fs::read_dir(&dir)
+        let names: Vec<_> = std::fs::read_dir(dir)
             .unwrap()
             .map(|e| e.unwrap().file_name())
             .collect();
@@ -109,13 +111,15 @@ mod tests {
             vec![std::ffi::OsString::from("a.csv")],
             "no temporary left"
         );
-        std::fs::remove_dir_all(&dir).unwrap();
     }
 
     #[test]
     fn a_sidecar_that_is_a_folder_is_refused_before_the_csv_is_replaced() {
-        let dir = std::env::temp_dir().join(format!("torsim-pair-dir-{}", std::process::id()));
-        let _ = std::fs::remove_dir_all(&dir);
+        let scratch = tempfile::Builder::new()
+            .prefix("torsim-pair-dir-")
+            .tempdir()
+            .unwrap();
+        let dir = scratch.path();
         std::fs::create_dir_all(dir.join("a.toml/inner")).unwrap();
         let csv = dir.join("a.csv");
         std::fs::write(&csv, "old csv").unwrap();
@@ -126,10 +130,9 @@ mod tests {
         );
         assert_eq!(std::fs::read_to_string(&csv).unwrap(), "old csv");
         assert_eq!(
-            std::fs::read_dir(&dir).unwrap().count(),
+            std::fs::read_dir(dir).unwrap().count(),
             2,
             "no temporary left"
         );
-        std::fs::remove_dir_all(&dir).unwrap();
     }
 }

@@ -4,9 +4,13 @@
 //! files it did not make), and a runner that kills a case that does not end.
 #![allow(dead_code)]
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
+
+#[path = "../scratch/mod.rs"]
+mod scratch;
+pub use scratch::Scratch;
 
 /// What one run of the binary gave.
 pub struct Outcome {
@@ -57,12 +61,9 @@ pub fn run_in(dir: &Path, args: &[String]) -> Outcome {
     }
 }
 
-/// A fresh scratch directory for one case.
-pub fn scratch(case: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("torsim-hardening-{}-{case}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("scratch dir");
-    dir
+/// A fresh scratch directory for one case, removed when the returned guard is dropped.
+pub fn scratch(case: &str) -> Scratch {
+    Scratch::new(&format!("torsim-hardening-{case}-"))
 }
 
 /// A shipped preset's text.

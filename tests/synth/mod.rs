@@ -9,6 +9,10 @@
 use std::path::{Path, PathBuf};
 use torsim::recording::{Channel, ChannelKind, Recording, RecordingMeta, RunKind};
 
+#[path = "../scratch/mod.rs"]
+mod scratch;
+pub use scratch::Scratch;
+
 /// One order line: (order, amplitude rpm, phase rad).
 pub type Line = (f64, f64, f64);
 
@@ -77,12 +81,10 @@ pub fn recording(kind: RunKind, time_s: Vec<f64>, stations: Vec<(&str, Vec<f64>)
     }
 }
 
-/// A fresh empty directory under the system temp dir for one test.
-pub fn temp_dir(test: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("torsim-{test}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("create temp dir");
-    dir
+/// A fresh empty directory under the system temp dir for one test, removed when the
+/// returned guard is dropped.
+pub fn temp_dir(test: &str) -> Scratch {
+    Scratch::new(&format!("torsim-{test}-"))
 }
 
 /// Writes `text` to `dir/name` and returns the path.

@@ -12,6 +12,10 @@ use torsim::synth::{
     generate,
 };
 
+#[path = "../scratch/mod.rs"]
+mod scratch;
+pub use scratch::Scratch;
+
 /// The diagnosis bench preset.
 pub fn bench() -> Model {
     let p = presets::preset("diagnosis-bench").expect("shipped");
@@ -131,10 +135,8 @@ pub fn peak(track: &[(f64, f64)], from_rpm: f64, to_rpm: f64) -> (f64, f64) {
         )
 }
 
-/// A fresh empty directory under the system temp dir.
-pub fn temp_dir(test: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("torsim-synth-{test}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("create temp dir");
-    dir
+/// A fresh empty directory under the system temp dir, removed when the returned guard is
+/// dropped.
+pub fn temp_dir(test: &str) -> Scratch {
+    Scratch::new(&format!("torsim-synth-{test}-"))
 }

@@ -156,11 +156,11 @@ fn an_invalid_value_shows_the_error_and_keeps_the_last_results() {
 #[test]
 fn save_and_reopen_gives_the_same_model() {
     let mut h = harness();
-    let path = std::env::temp_dir().join(format!("torsim-gui-{}.toml", std::process::id()));
+    let dir = crate::gui::tests::support::Scratch::new("torsim-gui-");
+    let path = dir.join("model.toml");
     save_to(h.state_mut(), path.clone());
     assert!(!h.state().dirty && h.state().status.starts_with("saved"));
     assert_eq!(read_model_file(&path).expect("reopen"), h.state().model);
-    let _ = std::fs::remove_file(path);
 }
 
 /// An in-memory stand-in for eframe's storage.

@@ -245,9 +245,7 @@ fn none_and_an_edited_model_cannot_be_accepted() {
 /// temporary file is left; a folder that does not exist is an error naming the file.
 #[test]
 fn the_report_page_is_written_atomically() {
-    let dir = std::env::temp_dir().join(format!("torsim-gui-report-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("temp dir");
+    let dir = crate::gui::tests::support::Scratch::new("torsim-gui-report-");
     let page = dir.join("diagnosis.html");
     let written =
         crate::gui::views::diagnosis::save::write_page(&page, &report(), "bench").expect("page");
@@ -263,5 +261,4 @@ fn the_report_page_is_written_atomically() {
     let e =
         crate::gui::views::diagnosis::save::write_page(&missing, &report(), "bench").unwrap_err();
     assert!(e.contains("no/such/folder/r.html"), "{e}");
-    let _ = std::fs::remove_dir_all(&dir);
 }

@@ -5,16 +5,15 @@
 use crate::gui::app::TorsimApp;
 use crate::gui::export::PlotData;
 use crate::gui::overwrite::{PendingWrite, request};
+use crate::gui::tests::support::Scratch;
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 use std::path::PathBuf;
 use torsim::model::{parse_model, presets};
 
-fn dir(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("torsim-gui-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
+/// A fresh empty directory, removed when the returned guard is dropped.
+fn dir(name: &str) -> Scratch {
+    Scratch::new(&format!("torsim-gui-{name}-"))
 }
 
 /// A window on the cng-genset preset "opened" from `model`, with the recording `csv` open
@@ -106,5 +105,4 @@ fn exports_onto_open_files_ask_and_others_are_written_at_once() {
             .unwrap()
             .starts_with("x,y\n")
     );
-    std::fs::remove_dir_all(&d).unwrap();
 }

@@ -93,7 +93,9 @@ fn crash_a_window(dir: &Path) {
 
 #[test]
 fn a_killed_window_is_restored() {
-    let dir = dir("kill");
+    // The guard stays here; the window's closure below takes a copy of the path.
+    let scratch = dir("kill");
+    let dir = scratch.to_path_buf();
     crash_a_window(&dir);
     let found = recovery::orphans(&dir);
     assert_eq!(found.len(), 1, "the killed window's file is left");
@@ -120,7 +122,9 @@ fn a_killed_window_is_restored() {
 /// window's edits wait in File → Recover unsaved edits….
 #[test]
 fn a_named_model_opens_and_the_edits_are_offered() {
-    let dir = dir("offer");
+    // The guard stays here; the window's closure below takes a copy of the path.
+    let scratch = dir("offer");
+    let dir = scratch.to_path_buf();
     crash_a_window(&dir);
     let named = (preset("two-inertia"), None);
     let fallback = (preset("cng-genset"), None);

@@ -6,6 +6,7 @@
 use crate::gui::app::TorsimApp;
 use crate::gui::recordings::open_recording;
 use crate::gui::session::trace_data::GroupKind;
+use crate::gui::tests::support::Scratch;
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 use std::path::PathBuf;
@@ -50,11 +51,9 @@ fn step_until(
     h.step();
 }
 
-/// A fresh temporary folder for one test.
-fn temp_dir(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("torsim-gui-{name}-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("temp dir");
-    dir
+/// A fresh temporary folder for one test, removed when the returned guard is dropped.
+fn temp_dir(name: &str) -> Scratch {
+    Scratch::new(&format!("torsim-gui-{name}-"))
 }
 
 /// The traces tab, run-up selected (the model's range 1500 to 6000 rpm in 60 s).
@@ -255,7 +254,6 @@ fn a_steady_recording_is_overlaid_with_its_dominant_order() {
         1,
         "the engine's row"
     );
-    let _ = std::fs::remove_dir_all(dir);
 }
 
 #[test]
@@ -285,7 +283,6 @@ fn a_run_up_recording_is_simulated_with_its_speed_profile() {
     assert!((from_rpm - 2000.0).abs() < 5.0, "{from_rpm}");
     assert!((to_rpm - 3000.0).abs() < 5.0, "{to_rpm}");
     assert!((duration_s - 2.0).abs() < 1e-9, "{duration_s}");
-    let _ = std::fs::remove_dir_all(dir);
 }
 
 #[test]
@@ -309,5 +306,4 @@ fn a_bad_recording_shows_an_error_naming_the_file() {
     h.get_by_label_contains("Recording bad-run.csv could not be used");
     assert!(h.state().results.recording.is_none());
     assert!(h.state().stations.is_empty());
-    let _ = std::fs::remove_dir_all(dir);
 }

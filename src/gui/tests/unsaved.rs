@@ -8,17 +8,16 @@
 use crate::gui::app::TorsimApp;
 use crate::gui::files;
 use crate::gui::recovery::{AUTOSAVE_AFTER, Recovery};
+use crate::gui::tests::support::Scratch;
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 use std::path::PathBuf;
 use std::time::{Duration, Instant};
 use torsim::model::{Model, presets, read_model_file};
 
-pub(super) fn dir(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("torsim-unsaved-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("temp dir");
-    dir
+/// A fresh empty directory, removed when the returned guard is dropped.
+pub(super) fn dir(name: &str) -> Scratch {
+    Scratch::new(&format!("torsim-unsaved-{name}-"))
 }
 
 use crate::gui::tests::support::preset_model as preset;
