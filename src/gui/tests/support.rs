@@ -30,34 +30,7 @@ pub(super) fn step_until(h: &mut Harness<'static, TorsimApp>, done: impl Fn(&Tor
     }
 }
 
-/// A fresh empty directory under the system temp dir, removed with everything in it when
-/// dropped, so a test leaves nothing behind, passed or failed. It derefs to its path:
-/// `dir.join("x")` and `&dir` as a `&Path` work as on a `PathBuf`. Bind it to a named
-/// variable (not `_`) that lives as long as the test uses the path.
-#[must_use = "the directory is removed when this is dropped"]
-pub(super) struct Scratch(tempfile::TempDir);
-
-impl Scratch {
-    /// A new directory whose name starts with `prefix` (a random suffix makes it unique).
-    pub(super) fn new(prefix: &str) -> Self {
-        Self(
-            tempfile::Builder::new()
-                .prefix(prefix)
-                .tempdir()
-                .expect("temp dir"),
-        )
-    }
-}
-
-impl std::ops::Deref for Scratch {
-    type Target = std::path::Path;
-    fn deref(&self) -> &std::path::Path {
-        self.0.path()
-    }
-}
-
-impl AsRef<std::path::Path> for Scratch {
-    fn as_ref(&self) -> &std::path::Path {
-        self.0.path()
-    }
-}
+/// The integration tests' scratch directory (`tests/scratch`), one guard for both.
+#[path = "../../../tests/scratch/mod.rs"]
+mod scratch;
+pub(super) use scratch::Scratch;
