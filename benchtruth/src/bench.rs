@@ -105,6 +105,10 @@ pub struct Row {
     pub form: String,
     pub outcome: Result<Outcome, String>,
     pub seconds: f64,
+    /// What the campaign exercised of the effect ([`crate::exercise::Exercise::headline`]:
+    /// the largest fraction of samples inside a gear's play, or the largest secant
+    /// stiffening of an amplitude law); `None` for the classes not measured.
+    pub exercised: Option<f64>,
 }
 
 /// Draws and diagnoses the case of `seed` in `dir`.
@@ -117,6 +121,7 @@ pub fn run_case(torsim: &Path, seed: u64, dir: &Path) -> Row {
                 form: "?".into(),
                 outcome: Err(format!("draw: {e}")),
                 seconds: 0.0,
+                exercised: None,
             };
         }
     };
@@ -143,11 +148,13 @@ pub fn run_case(torsim: &Path, seed: u64, dir: &Path) -> Row {
                 .map(|v| score(&files, &v))
         }
     };
+    let all: Vec<_> = files.exercise.iter().map(|(_, e)| *e).collect();
     Row {
         seed,
         form: files.form,
         outcome,
         seconds,
+        exercised: crate::exercise::Exercise::headline(&all),
     }
 }
 
@@ -247,18 +254,21 @@ fn verdict_of(r: &Row) -> String {
     }
 }
 
-/// `results.csv`: one row per case.
+/// `results.csv`: one row per case. `exercised` is [`Row::exercised`], empty where not
+/// measured.
 pub fn results_csv(rows: &[Row]) -> String {
-    let mut s =
-        String::from("seed,truth,form,verdict,right,place,fit_before,fit_after,seconds,error\n");
+    let mut s = String::from(
+        "seed,truth,form,verdict,right,place,fit_before,fit_after,seconds,error,exercised\n",
+    );
     for r in rows {
         let num = |x: Option<f64>| x.map_or(String::new(), |v| format!("{v}"));
+        let exercised = r.exercised.map_or(String::new(), |v| format!("{v:.4}"));
         match &r.outcome {
             Ok(o) => {
                 let place = o.place.map_or("", Place::word);
                 let _ = writeln!(
                     s,
-                    "{},{},{},{},{},{place},{},{},{:.2},",
+                    "{},{},{},{},{},{place},{},{},{:.2},,{exercised}",
                     r.seed,
                     o.truth,
                     r.form,
@@ -272,7 +282,7 @@ pub fn results_csv(rows: &[Row]) -> String {
             Err(e) => {
                 let _ = writeln!(
                     s,
-                    "{},{},{},error,false,,,,{:.2},\"{}\"",
+                    "{},{},{},error,false,,,,{:.2},\"{}\",{exercised}",
                     r.seed,
                     class_of_row(r),
                     r.form,
@@ -297,6 +307,7 @@ mod tests {
             class: "cylinder_imbalance".into(),
             form: "pressure_scale".into(),
             place: Some(("cylinder".into(), vec!["6".into()])),
+            exercise: Vec::new(),
         }
     }
 

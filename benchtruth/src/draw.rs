@@ -257,7 +257,7 @@ fn rubbers(d: &Driveline) -> Vec<usize> {
 }
 
 /// Mean torque through connection `c` at full load (N·m, in its `to` shaft).
-fn through_torque(d: &Driveline, c: usize) -> f64 {
+pub fn through_torque(d: &Driveline, c: usize) -> f64 {
     let t = EngineLaw::new(&d.engine, 1.0, Kinematics::FirstOrder).mean_torque();
     t / d.speed_ratios()[d.connections[c].to]
 }

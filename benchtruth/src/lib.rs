@@ -13,6 +13,7 @@ pub mod draw;
 pub mod driveline;
 pub mod effects;
 pub mod engine;
+pub mod exercise;
 pub mod fitpoints;
 pub mod integrate;
 pub mod nnls;

@@ -102,13 +102,15 @@ fn main() -> Result<()> {
 fn report(row: &benchtruth::bench::Row) {
     match &row.outcome {
         Ok(o) => eprintln!(
-            "seed {}: {} ({}) -> {} [{}] {:.1} s",
+            "seed {}: {} ({}) -> {} [{}] {:.1} s{}",
             row.seed,
             o.truth,
             row.form,
             o.verdict,
             if o.right { "right" } else { "wrong" },
-            row.seconds
+            row.seconds,
+            row.exercised
+                .map_or(String::new(), |v| format!(", exercised {v:.3}"))
         ),
         Err(e) => eprintln!("seed {}: error: {e}", row.seed),
     }

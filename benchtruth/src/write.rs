@@ -5,6 +5,7 @@
 use crate::draw::{Case, draw_case};
 use crate::driveline::{Driveline, Kind};
 use crate::effects::{Effect, SensorLaw};
+use crate::exercise::{Exercise, Meter};
 use crate::rng::Rng;
 use crate::sim;
 use std::f64::consts::TAU;
@@ -33,6 +34,9 @@ pub struct CaseFiles {
     pub class: String,
     pub form: String,
     pub place: Option<(String, Vec<String>)>,
+    /// What each recording exercised of the effect (file stem, measure), for the classes
+    /// [`crate::exercise`] measures.
+    pub exercise: Vec<(String, Exercise)>,
 }
 
 fn put(path: &Path, text: &str) -> Result<(), WriteError> {
@@ -155,8 +159,13 @@ fn measured_rpm(law: Option<&SensorLaw>, theta: f64, omega: f64, sample_s: f64) 
     rpm * factor
 }
 
-/// Simulates and writes one recording (CSV + sidecar); returns the CSV path.
-fn write_recording(case: &Case, idx: usize, dir: &Path) -> Result<PathBuf, WriteError> {
+/// Simulates and writes one recording (CSV + sidecar); returns the CSV path and what the
+/// recording exercised of the effect.
+fn write_recording(
+    case: &Case,
+    idx: usize,
+    dir: &Path,
+) -> Result<(PathBuf, Option<Exercise>), WriteError> {
     let rec = &case.campaign.recordings[idx];
     let c = &case.campaign;
     let plant = sim::plant_for(case, rec);
@@ -180,7 +189,11 @@ fn write_recording(case: &Case, idx: usize, dir: &Path) -> Result<PathBuf, Write
     // The first time at which the truth is no longer finite: a bench never writes NaN
     // (a diverged truth is the bench's failure, reported as such, not torsim's).
     let mut diverged_s: Option<f64> = None;
+    let mut meter = Meter::for_case(case);
     sim::run(&case.truth, &plant, c.rate_hz, |t, y| {
+        if let Some(m) = meter.as_mut() {
+            m.add(&y[..n_nodes]);
+        }
         let _ = write!(csv, "{:.6}", c.clock_start_s + t);
         for (k, s) in c.stations.iter().enumerate() {
             let law = artifact.as_ref().filter(|(st, _)| *st == k).map(|(_, l)| l);
@@ -220,11 +233,12 @@ fn write_recording(case: &Case, idx: usize, dir: &Path) -> Result<PathBuf, Write
         );
     }
     put(&dir.join(format!("{}.toml", rec.stem)), &side)?;
-    Ok(csv_path)
+    Ok((csv_path, meter.and_then(|m| m.result())))
 }
 
-/// `truth.toml`: effect, form, parameters, place, errors, campaign, seed.
-fn truth_toml(case: &Case) -> String {
+/// `truth.toml`: effect, form, parameters, place, errors, campaign, seed, and what each
+/// recording exercised (`exercise`).
+fn truth_toml(case: &Case, exercise: &[(String, Exercise)]) -> String {
     let mut s = format!(
         "# The truth of this benchtruth case; torsim never reads it.\nformat = 1\nseed = {}\neffect = \"{}\"\nform = \"{}\"\nfirst_mode_damping = {}\nmodes_hz = [{}]\n",
         case.seed,
@@ -256,6 +270,12 @@ fn truth_toml(case: &Case) -> String {
         "\n[measurement]\nrate_hz = {}\nnoise_rpm = {}\nwobble = {}\nwobble_period_s = {}\nclock_start_s = {}",
         c.rate_hz, c.noise_rpm, c.wobble, c.wobble_period_s, c.clock_start_s
     );
+    if !exercise.is_empty() {
+        s.push_str("\n# What each recording exercised of the effect (benchtruth's exercise.rs).\n[exercise]\n");
+        for (stem, e) in exercise {
+            let _ = writeln!(s, "\"{stem}\" = {}", e.toml());
+        }
+    }
     s
 }
 
@@ -270,7 +290,8 @@ pub fn write_case(seed: u64, class: Option<&str>, dir: &Path) -> Result<CaseFile
     let (lo, hi) = crate::fitpoints::speed_range_rpm(&case.campaign);
     let model = dir.join("model.toml");
     put(&model, &model_toml(&case.user, lo, hi))?;
-    let results: Vec<Result<PathBuf, WriteError>> = std::thread::scope(|s| {
+    type Written = Result<(PathBuf, Option<Exercise>), WriteError>;
+    let results: Vec<Written> = std::thread::scope(|s| {
         let handles: Vec<_> = (0..case.campaign.recordings.len())
             .map(|i| {
                 let case = &case;
@@ -286,9 +307,15 @@ pub fn write_case(seed: u64, class: Option<&str>, dir: &Path) -> Result<CaseFile
             })
             .collect()
     });
-    let recordings = results.into_iter().collect::<Result<Vec<_>, _>>()?;
+    let written = results.into_iter().collect::<Result<Vec<_>, _>>()?;
+    let exercise: Vec<(String, Exercise)> = written
+        .iter()
+        .zip(&case.campaign.recordings)
+        .filter_map(|((_, e), rec)| e.map(|e| (rec.stem.clone(), e)))
+        .collect();
+    let recordings = written.into_iter().map(|(p, _)| p).collect();
     let truth = dir.join("truth.toml");
-    put(&truth, &truth_toml(&case))?;
+    put(&truth, &truth_toml(&case, &exercise))?;
     Ok(CaseFiles {
         model,
         recordings,
@@ -296,5 +323,6 @@ pub fn write_case(seed: u64, class: Option<&str>, dir: &Path) -> Result<CaseFile
         class: case.class.clone(),
         form: case.form.clone(),
         place: case.place.clone(),
+        exercise,
     })
 }
