@@ -111,7 +111,7 @@ pub fn diagnose(
     let results = parallel::map_reporting(
         list.len(),
         options.threads,
-        &|k| screen_one(&cx, &plain_fit, &list[k]),
+        &|k| screen_one(&cx, &plain_fit, &baseline, &list[k]),
         &mut |k, finished| {
             step(
                 0.3 + 0.2 * finished as f64 / list.len() as f64,

@@ -139,14 +139,18 @@ fn torque_reversal_runs(cx: &Context, e: &Evaluated, name: &str) -> Vec<bool> {
         .collect()
 }
 
-/// Screens one candidate around the plain fit `plain`; an error when it is not plausible
-/// (its signature is absent: [`DiagnoseError::Input`] says why) or cannot be fitted (a
-/// [`DiagnoseError::Simulation`]: the caller rejects it, [`Screened::rejected_at`]).
+/// Screens one candidate around the plain fit `plain` (a backlash also from `baseline`,
+/// the user's model: [`super::restart::second_start_in_time`]); an error when it is not
+/// plausible (its signature is absent: [`DiagnoseError::Input`] says why) or cannot be
+/// fitted (a [`DiagnoseError::Simulation`]: the caller rejects it,
+/// [`Screened::rejected_at`]).
 pub fn screen_one(
     cx: &Context,
     plain: &Evaluated,
+    baseline: &Evaluated,
     c: &Candidate,
 ) -> Result<Screened, DiagnoseError> {
+    let mut in_time_domain = false;
     let mut rejected_steps = Vec::new();
     let mut in_time = |stepped: super::rounds::Stepped| {
         rejected_steps.extend(stepped.rejected);
@@ -175,12 +179,19 @@ pub fn screen_one(
                     100.0 * REVERSAL_FRACTION
                 )));
             }
-            (
-                in_time(cx.fit_time_domain(plain, c, &runs)?),
-                false,
-                "screened in the time domain of the recordings where its torque can reverse"
-                    .to_string(),
-            )
+            let first = in_time(cx.fit_time_domain(plain, c, &runs)?);
+            let (second, why) =
+                super::restart::second_start_in_time(cx, baseline, &first, c, &runs)?;
+            rejected_steps.extend(why);
+            let note = "screened in the time domain of the recordings where its torque can \
+                        reverse";
+            match second {
+                Some(e) => {
+                    in_time_domain = true;
+                    (e, false, format!("{note}, from the user's values"))
+                }
+                None => (first, false, note.to_string()),
+            }
         }
         Effect::CouplingThermalDrift => {
             let drift = long_run_drift(&cx.observed).unwrap_or(0.0);
@@ -216,7 +227,7 @@ pub fn screen_one(
         evaluated,
         verified,
         note,
-        in_time_domain: false,
+        in_time_domain,
         rejected: None,
         rejected_steps,
     })
