@@ -78,7 +78,6 @@ mod sensor_local;
 pub mod sensor_refine;
 pub mod settling;
 pub mod spread;
-mod steady_noise;
 pub mod surrogate;
 mod svg;
 #[cfg(test)]

@@ -6,15 +6,13 @@
 //!   blocks, each analysed like a regime: the drift of the amplitudes over the run.
 //! - A run-up gives its STFT order tracks, averaged in speed bins of [`BIN_RPM`].
 //!
-//! Noise: a steady amplitude's σ is the scatter of the same amplitude over quarters of
-//! the record, divided by 2, pooled over the orders of the station (white noise is the
-//! same at every order), or the order's own where it is not stationary
-//! ([`super::steady_noise`]). A run-up bin's σ comes from that pooled sample noise
+//! Noise: a steady amplitude's σ is the scatter of the same amplitude over [`PARTS`]
+//! quarters of the record, divided by √PARTS, pooled over the orders of the station (white
+//! noise is the same at every order). A run-up bin's σ comes from that pooled sample noise
 //! through the STFT window's length and the windows averaged.
 
 use super::DiagnoseError;
 use super::LabelledRecording;
-use super::steady_noise::{SteadyNoise, steady_noise};
 use crate::recording::{Recording, classify};
 use crate::signal::{Analysis, AnalysisOptions, analyse_with};
 
@@ -22,6 +20,8 @@ use crate::signal::{Analysis, AnalysisOptions, analyse_with};
 pub const LONG_RUN_BLOCKS: usize = 4;
 /// Speed bin of a run-up, rpm.
 pub const BIN_RPM: f64 = 100.0;
+/// Parts of a record whose scatter gives the noise.
+const PARTS: usize = 4;
 
 /// How a recording is compared: its shape, by the one classifier
 /// ([`crate::recording::classify`]), with the speeds this analysis measures.
@@ -223,7 +223,6 @@ pub fn observe(
                     duration / 2.0,
                 );
                 noise
-                    .station_rpm
                     .iter()
                     .map(|s| sample_noise(*s, rec.time_s.len()))
                     .collect()
@@ -353,7 +352,7 @@ fn push_steady(
     run: usize,
     part: usize,
     (rec, analysis): (&Recording, &Analysis),
-    noise: &SteadyNoise,
+    noise: &[f64],
     time_s: f64,
 ) {
     let floor = amplitude_floor(rec, analysis);
@@ -362,12 +361,9 @@ fn push_steady(
         .iter()
         .find(|s| s.name == analysis.reference)
         .map_or(0.0, |s| s.mean_speed_rpm);
-    for (s, (station, floor)) in analysis.stations.iter().zip(floor).enumerate() {
-        // The noise of the station sets the Rice bias; a non-stationary order's own
-        // scatter only widens its σ.
-        let noise_rpm = noise.noise_rpm(s, floor);
+    for ((station, sigma), floor) in analysis.stations.iter().zip(noise).zip(floor) {
+        let sigma = sigma.max(floor);
         for o in station.orders.iter().filter(|o| o.order > 0.0) {
-            let sigma = noise.sigma_rpm(s, o.order, floor);
             observed.observations.push(Observation {
                 run,
                 part,
@@ -377,10 +373,66 @@ fn push_steady(
                 time_s,
                 measured_rpm: o.amplitude,
                 sigma_rpm: sigma,
-                bias_sigma_rpm: noise_rpm,
+                bias_sigma_rpm: sigma,
             });
         }
     }
+}
+
+/// σ of each station's order amplitudes from the scatter over [`PARTS`] parts (`whole`:
+/// the analysis of all of `rec`).
+fn steady_noise(
+    rec: &Recording,
+    duration: f64,
+    options: &AnalysisOptions,
+    whole: &Analysis,
+) -> Result<Vec<f64>, String> {
+    let parts: Vec<Analysis> = (0..PARTS)
+        .map(|k| {
+            let (a, b) = (
+                duration * k as f64 / PARTS as f64,
+                duration * (k + 1) as f64 / PARTS as f64,
+            );
+            analyse_with(&slice(rec, a, b), options).map_err(|e| e.to_string())
+        })
+        .collect::<Result<_, _>>()?;
+    Ok((0..whole.stations.len())
+        .map(|s| {
+            let Some(first) = parts[0].stations.get(s) else {
+                return f64::NAN;
+            };
+            // E[a_k²] = A² + 2s² for each part; the whole record's A_w² = A² + 2s²/P. So
+            // 2s²(1 − 1/P) = mean(a_k²) − A_w² for every order; the median over the orders
+            // resists the large orders, whose parts differ by more than noise (the wobble).
+            // s is the per-component noise of one part, s/√P that of the whole record.
+            let mut excess: Vec<f64> = Vec::new();
+            for (k, o) in first
+                .orders
+                .iter()
+                .enumerate()
+                .filter(|(_, o)| o.order > 0.0)
+            {
+                let xs: Vec<f64> = parts
+                    .iter()
+                    .filter_map(|p| p.stations.get(s)?.orders.get(k))
+                    .filter(|x| x.order == o.order)
+                    .map(|x| x.amplitude)
+                    .collect();
+                let whole = whole
+                    .stations
+                    .get(s)
+                    .and_then(|w| w.orders.iter().find(|x| x.order == o.order));
+                if let (true, Some(w)) = (xs.len() == PARTS, whole) {
+                    let mean_sq = xs.iter().map(|x| x * x).sum::<f64>() / PARTS as f64;
+                    excess.push(mean_sq - w.amplitude * w.amplitude);
+                }
+            }
+            excess.sort_by(f64::total_cmp);
+            let median = excess.get(excess.len() / 2).copied().unwrap_or(0.0);
+            let s_part_sq = median.max(0.0) / (2.0 * (1.0 - 1.0 / PARTS as f64));
+            (s_part_sq / PARTS as f64).sqrt()
+        })
+        .collect())
 }
 
 /// The blocks of a long run; returns the sample noise per station and the cycle speeds
@@ -399,12 +451,7 @@ fn long_run(
         let part = slice(rec, b as f64 * block, (b + 1) as f64 * block);
         let analysis = analyse_with(&part, options).map_err(|e| e.to_string())?;
         cycles.push(cycle_speeds(&part, &analysis.reference, analysis.cycle_rev));
-        let mut noise = steady_noise(&part, block, options, &analysis)?;
-        // A long run's amplitudes drift by design (a rubber warming up): that drift is
-        // what its blocks measure and a model predicts, not an uncertainty, so no order
-        // of a block takes its own scatter as its σ (validation seeds 1005 and 1016,
-        // thermal drift, were read as other effects when it did).
-        noise.nonstationary.iter_mut().for_each(Vec::clear);
+        let noise = steady_noise(&part, block, options, &analysis)?;
         push_steady(
             observed,
             run,
@@ -413,8 +460,8 @@ fn long_run(
             &noise,
             (b as f64 + 0.5) * block,
         );
-        noise_sum.resize(noise.station_rpm.len(), 0.0);
-        for (acc, s) in noise_sum.iter_mut().zip(&noise.station_rpm) {
+        noise_sum.resize(noise.len(), 0.0);
+        for (acc, s) in noise_sum.iter_mut().zip(&noise) {
             *acc += sample_noise(*s, part.time_s.len()) / LONG_RUN_BLOCKS as f64;
         }
     }

@@ -169,11 +169,11 @@ fn cost_on(cx: &Context, e: &Evaluated, runs: &[bool]) -> f64 {
 /// `None` and the first start stands. A second start that cannot be simulated is a
 /// rejected step, returned with the reason; only a fatal error (cancelling) is an error.
 ///
-/// Development seed 2054 (a softened dead zone of 0.228°, the play open in 25–77 % of
-/// each recording's samples): from the plain fit, whose crank inertia had moved by −12 %
-/// to stand in for the play, the search ended at 0.0084° (cost 4725 on the runs where
-/// the torque reverses; 50 313 at 0.26°); from the user's values it ends at 0.15° (1958),
-/// and the diagnosis names the backlash (held-out χ²/N 37.7 against the plain fit's 46.9).
+/// Development seed 2032 (Hertzian contact after 0.106° of play): from the plain fit the
+/// search ended at the start, 0.05° (held-out χ²/N 87 310 after verification); from the
+/// user's values at 0.087° (17 102). Seed 2010 (0.180°): 0.212° → 0.188°, held-out
+/// 116.7 → 91.2. On validation seeds 1000–1043 the second start won in three cases
+/// (1008, 1011, 1015) and changed no verdict.
 pub fn second_start_in_time(
     cx: &Context,
     baseline: &Evaluated,
