@@ -148,13 +148,13 @@ pub fn second_starts(
 }
 
 /// The cost of `e` on the fitted observations of the runs flagged in `runs`: what a
-/// time-domain screening compares (the other runs keep their start's values).
+/// time-domain screening compares (the other runs keep their start's values). From the
+/// z-scores `e` already carries ([`Context::scored`]).
 fn cost_on(cx: &Context, e: &Evaluated, runs: &[bool]) -> f64 {
-    let z = super::residual::z_scores(&cx.observed, &e.simulated);
     cx.observed
         .observations
         .iter()
-        .zip(&z)
+        .zip(&e.z)
         .zip(&cx.held_out)
         .filter(|((o, _), held)| !**held && runs.get(o.run).copied().unwrap_or(false))
         .map(|((_, z), _)| z * z)
