@@ -186,7 +186,7 @@ pub fn candidates(model: &Model, stations: &[String], long_run: bool) -> Vec<Can
         .iter()
         .map(|n| n.inertia_kg_m2)
         .fold(f64::INFINITY, f64::min);
-    for c in &model.connections {
+    for (j, c) in model.connections.iter().enumerate() {
         let at = || vec![("connection", c.name.clone())];
         match &c.kind {
             ConnectionKind::Rubber(_) => {
@@ -196,10 +196,14 @@ pub fn candidates(model: &Model, stations: &[String], long_run: bool) -> Vec<Can
                     param: p,
                     artifact_gains: None,
                 };
+                // Seed 000's form on the linear model, and the elastic form, `a2` bounded
+                // by the stage's own working twist, searched in the time domain
+                // ([`super::candidates_amplitude`]).
                 out.push(add(
                     Effect::CouplingAmplitudeNonlinearity,
                     param("a2", 0.0152, 0.0, 0.5, false).absent_at(0.0),
                 ));
+                out.extend(super::candidates_amplitude::elastic_candidate(model, j));
                 out.push(add(
                     Effect::CouplingFrequencyDependence,
                     param("scale", 0.1, 0.0, 1.0, false).absent_at(0.0),
@@ -329,8 +333,8 @@ mod tests {
     }
 
     /// An effect at its absence is no effect: a weak cylinder at 1.0001 of the others'
-    /// pressure (1 % of the way to the start's 0.95 is 0.9995), a stiffening of a2 = 0; a
-    /// real one, and a parameter without an absence (a heat capacity), are not.
+    /// pressure (1 % of the way to the start's 0.95 is 0.9995), a stiffening of a2 = 0 (the
+    /// elastic form's also at its lowest bound, a thousandth of its start); a real one, and a parameter without an absence (a heat capacity), are not.
     #[test]
     fn an_effect_at_its_absence_is_no_effect() {
         let text = presets::preset("diagnosis-bench").expect("shipped").text;
@@ -342,6 +346,13 @@ mod tests {
         assert!(!cylinder.is_absent(Some(0.999)) && !cylinder.is_absent(Some(0.95)));
         assert!(!cylinder.is_absent(None));
         assert!(of("a2").is_absent(Some(0.0)) && !of("a2").is_absent(Some(0.001)));
+        let elastic = &list
+            .iter()
+            .find(|c| c.form() == Some("elastic"))
+            .unwrap()
+            .param;
+        assert!(elastic.is_absent(Some(0.0)) && elastic.is_absent(Some(elastic.lo)));
+        assert!(!elastic.is_absent(Some(0.05 * elastic.start)));
         assert!(of("exponent").is_absent(Some(0.0)));
         assert!(!of("capacity_j_per_k").is_absent(Some(1.0e5)));
     }

@@ -17,12 +17,14 @@
 //! stiffness, eq. 13–15) keeps the seed-scale bounds: widened alone it made the
 //! validation worse (717c786, reverted).
 //!
-//! [`elastic_candidate`] is not among the diagnosis' candidates
-//! ([`super::candidates::candidates`]): on development seeds 2 and 35 it changed no
-//! verdict, and on validation seeds 1000–1043 it named a `none` control (1034) and a
-//! thermal drift (1038) as amplitude nonlinearity. What keeps the seed form from fitting
-//! the independent bench's stiffening is the screening's start (README, issue 14), and
-//! the form waits for that.
+//! [`elastic_candidate`] is one of the diagnosis' two amplitude candidates
+//! ([`super::candidates::candidates`]), beside the seed form on the linear model. It is
+//! screened in the time domain ([`super::screen::linear_sees`]), where the stiffening the
+//! vibration itself sets is seen: `a2` is searched in `ln a2` from [`START_STIFFENING`]
+//! over three decades down ([`LOWEST_FRACTION`]). Screened on the linear model instead
+//! (tangent at the static twist), it had named a `none` control (validation 1034) and a
+//! thermal drift (1038) as amplitude nonlinearity, and the seed form is pushed to its
+//! bound on every development case of the independent bench (2004–2081).
 
 use super::candidates::{Candidate, Param};
 use crate::effects::Effect;
@@ -38,6 +40,10 @@ pub const MAX_STIFFENING: f64 = 1.0;
 pub const START_STIFFENING: f64 = 0.1;
 /// The bounds of before, at the seed's scale: `a2` in [0, 0.5] /mm², started at 0.0152.
 const SEED_HI_PER_MM2: f64 = 0.5;
+/// The lowest `a2` the search may reach, as a fraction of its start: a stiffening of 1e-4
+/// at the full-load static twist, 1 % of the way to the start and so counted as no
+/// effect ([`super::candidates::Param::is_absent`]).
+pub const LOWEST_FRACTION: f64 = 1e-3;
 
 /// The `coupling_amplitude_nonlinearity` candidate of form `elastic` at connection `j`
 /// of `model` (`None` when `j` is no rubber stage): `a2` bounded by [`amplitude_param`].
@@ -93,9 +99,9 @@ pub fn amplitude_param(x_mm: Option<f64>) -> Param {
     Param {
         key: "a2",
         start,
-        lo: 0.0,
+        lo: start * LOWEST_FRACTION,
         hi,
-        log: false,
+        log: true,
         resonance: false,
         absent_at: Some(0.0),
     }
@@ -146,7 +152,10 @@ mod tests {
         let stiffening = |a2: f64| a2 * x * x + a1 * x;
         assert!((stiffening(p.hi) - a1 * x - MAX_STIFFENING).abs() < 1e-12);
         assert!((stiffening(p.start) - a1 * x - START_STIFFENING).abs() < 1e-12);
-        assert_eq!(p.lo, 0.0);
+        // Searched in ln a2, three decades below its start.
+        assert!(p.log);
+        assert_eq!(p.lo, p.start * LOWEST_FRACTION);
+        assert!(p.is_absent(Some(p.lo)) && !p.is_absent(Some(0.02 * p.start)));
         // A soft coupling (10 mm): the seed-scale bounds, not narrower.
         let soft = amplitude_param(Some(10.0));
         assert_eq!(

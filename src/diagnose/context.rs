@@ -185,7 +185,8 @@ impl Context<'_> {
     }
 
     /// Fits, on the surrogate around `at`, the plain factors `free` (the others stay at
-    /// `at`'s) and, for a candidate the linear model represents, its parameter. Returns
+    /// `at`'s) and, for a candidate the linear model represents ([`super::screen::
+    /// linear_sees`]), its parameter; another candidate's stays at `at`'s value. Returns
     /// the fitted point with the surrogate's prediction in `simulated` (no time domain).
     pub fn propose(
         &self,
@@ -222,7 +223,15 @@ impl Context<'_> {
         let mut bounds = vec![PLAIN_BOUNDS; free.len()];
         if let Some(c) = candidate {
             start.push(at.value.unwrap_or(c.param.start));
-            bounds.push(super::branch::fit_bounds(c, at.value));
+            let mut b = super::branch::fit_bounds(c, at.value);
+            // An effect screened in the time domain keeps the value found there: the
+            // surrogate is blind to it (backlash) or sees only its tangent at the
+            // static twist (an amplitude law set by the vibration).
+            if let (false, Some(v)) = (super::screen::linear_sees(c), at.value) {
+                b.lo = v;
+                b.hi = v;
+            }
+            bounds.push(b);
         }
         let correction = self.correction(at);
         let predict = |x: &[f64]| -> Option<Vec<f64>> {

@@ -28,7 +28,7 @@ pub fn equivalent_places<'a>(
     chosen: &Candidate,
     at: &Evaluated,
 ) -> Vec<String> {
-    let (Some(value), true) = (at.value, linear_sees(chosen.effect)) else {
+    let (Some(value), true) = (at.value, linear_sees(chosen)) else {
         return Vec::new();
     };
     let Ok(base) = scaled(cx.user, &cx.plain, &at.factors) else {

@@ -56,7 +56,7 @@ pub fn second_starts(
     let linear: Vec<usize> = (0..screened.len())
         .filter(|i| {
             let s = &screened[*i];
-            !s.verified && s.rejected.is_none() && linear_sees(s.candidate.effect)
+            !s.verified && s.rejected.is_none() && linear_sees(&s.candidate)
         })
         .collect();
     // Each candidate's fit from the user's values on its own, side by side
@@ -161,7 +161,29 @@ fn cost_on(cx: &Context, e: &Evaluated, runs: &[bool]) -> f64 {
         .sum()
 }
 
-/// The second start of an effect screened in the time domain (backlash): its search
+/// The time-domain search ([`Context::fit_time_domain`]) of `c` on `runs`, from `plain`,
+/// the plain fit, and from `baseline`, the user's model ([`second_start_in_time`]): the
+/// better of the two, whether it is the second and so a whole-campaign fit, and the
+/// steps rejected on the way. Backlash and the elastic amplitude law are screened so.
+pub fn search_in_time(
+    cx: &Context,
+    plain: &Evaluated,
+    baseline: &Evaluated,
+    c: &Candidate,
+    runs: &[bool],
+) -> Result<(Evaluated, bool, Vec<String>), DiagnoseError> {
+    let first = cx.fit_time_domain(plain, c, runs)?;
+    let mut rejected = first.rejected;
+    let (second, why) = second_start_in_time(cx, baseline, &first.best, c, runs)?;
+    rejected.extend(why);
+    Ok(match second {
+        Some(e) => (e, true, rejected),
+        None => (first.best, false, rejected),
+    })
+}
+
+/// The second start of an effect screened in the time domain (backlash, the elastic
+/// amplitude law): its search
 /// ([`Context::fit_time_domain`]) from `baseline`, the user's model, beside `first`, the
 /// search from the plain fit, on the same `runs`. When it ends lower there, it is run on
 /// the whole campaign and the plain parameters are refitted with it for one round, so
