@@ -334,7 +334,8 @@ mod tests {
 
     /// An effect at its absence is no effect: a weak cylinder at 1.0001 of the others'
     /// pressure (1 % of the way to the start's 0.95 is 0.9995), a stiffening of a2 = 0 (the
-    /// elastic form's also at its lowest bound, a thousandth of its start); a real one, and a parameter without an absence (a heat capacity), are not.
+    /// elastic form's also at its lowest bound, a thousandth of its start); a real one,
+    /// and a parameter without an absence (a heat capacity), are not.
     #[test]
     fn an_effect_at_its_absence_is_no_effect() {
         let text = presets::preset("diagnosis-bench").expect("shipped").text;
