@@ -12,7 +12,8 @@
 //! The frequencies come from the Wittrick–Williams count on the exact element; the test
 //! roots are found here by bisection on the closed forms above.
 
-use num_complex::Complex64;
+mod transient_support;
+
 use std::f64::consts::{PI, TAU};
 use torsim::modal::{damped_modes, modes, shares_by_connection, strain_energy_shares};
 use torsim::model::{parse_model, to_toml_string};
@@ -271,7 +272,6 @@ speed_range_rpm = [300.0, 6000.0]
     let excitation = Excitation::new(&m, &system, 1.0, &[1.0]);
     for speed_rpm in [900.0, first * 60.0, 3600.0, 5400.0] {
         let r = forced_response(&system, &excitation, &[speed_rpm]).unwrap();
-        let omega = speed_rpm * TAU / 60.0;
         let cycle_s = 60.0 / speed_rpm;
         let rate_hz = 4096.0 / cycle_s;
         let options = RunOptions {
@@ -280,14 +280,7 @@ speed_range_rpm = [300.0, 6000.0]
         };
         let sim = simulate(&m, Run::steady(speed_rpm, 1.0), options, &mut |_| true).unwrap();
         for (node, signal) in sim.speed_rpm.iter().enumerate() {
-            let cycles = (signal.len() as f64 / rate_hz / cycle_s).floor();
-            let n = (cycles * cycle_s * rate_hz).round() as usize;
-            let sum: Complex64 = signal[..n]
-                .iter()
-                .enumerate()
-                .map(|(i, v)| v * Complex64::from_polar(1.0, -omega * i as f64 / rate_hz))
-                .sum();
-            let time = 2.0 * sum.norm() / n as f64;
+            let time = transient_support::order_amplitude(signal, rate_hz, speed_rpm, 1.0);
             let freq = r.ias_amplitude_rpm[node][0][0];
             eprintln!("{speed_rpm:.0} rpm node {node}: simulate {time:.5} response {freq:.5}");
             assert!((time / freq - 1.0).abs() < 5e-3, "{time} vs {freq}");

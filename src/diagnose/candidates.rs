@@ -6,6 +6,8 @@
 //! | effect | where | fitted | start |
 //! |---|---|---|---|
 //! | `coupling_amplitude_nonlinearity` | rubber stage | `a2` of seed 000 eq. 1 (per mm², ≤ 0.5) | 0.0152 |
+//! | `coupling_amplitude_nonlinearity` (`form = elastic`, [`super::candidates_amplitude`]) | rubber stage | `a2`, in the time domain | 10 % stiffening at the static twist |
+//! | `coupling_amplitude_nonlinearity` (`elastic_linear`: `a2` = 0) | rubber stage | `a1` (per mm), in the time domain | 10 % stiffening at the static twist |
 //! | `coupling_frequency_dependence` | rubber stage | `scale` of seed 000 eq. 9 | 0.1 |
 //! | `coupling_frequency_dependence` (`form = power_law`) | rubber stage | `exponent` of a causal power law (loss tan(nπ/2)) | 0.05 |
 //! | `coupling_thermal_drift` | rubber stage, with a long run | `capacity_j_per_k` (eq. 10–11) | 300 |
@@ -112,10 +114,9 @@ impl Candidate {
         // A sensor artifact's `kind` and a frequency law's `form` tell the rows of one
         // place apart (a branch's place is its node, one row per node already).
         let kind = self
-            .fixed
-            .iter()
-            .find(|(k, v)| *k == "kind" || (*k == "form" && v != "branch"))
-            .map_or(String::new(), |(_, v)| format!(" ({v})"));
+            .form()
+            .filter(|f| *f != "branch")
+            .map_or(String::new(), |v| format!(" ({v})"));
         match self.fixed.first() {
             Some((_, v)) => format!("{} at {v}{kind}", self.effect),
             None => self.effect.to_string(),
@@ -123,8 +124,12 @@ impl Candidate {
     }
 
     /// The functional form of this candidate among its effect's (`"branch"`,
-    /// `"power_law"`, a sensor artifact's `kind`), `None` for the effect's first form.
+    /// `"power_law"`, `"elastic"`, [`super::candidates_amplitude::LINEAR_FORM`], a sensor
+    /// artifact's `kind`), `None` for the effect's first form.
     pub fn form(&self) -> Option<&str> {
+        if self.param.key == "a1" && super::candidates_amplitude::is_elastic(self) {
+            return Some(super::candidates_amplitude::LINEAR_FORM);
+        }
         self.fixed
             .iter()
             .find(|(k, _)| *k == "form" || *k == "kind")
@@ -204,6 +209,9 @@ pub fn candidates(model: &Model, stations: &[String], long_run: bool) -> Vec<Can
                     param("a2", 0.0152, 0.0, 0.5, false).absent_at(0.0),
                 ));
                 out.extend(super::candidates_amplitude::elastic_candidate(model, j));
+                out.extend(super::candidates_amplitude::elastic_linear_candidate(
+                    model, j,
+                ));
                 out.push(add(
                     Effect::CouplingFrequencyDependence,
                     param("scale", 0.1, 0.0, 1.0, false).absent_at(0.0),

@@ -28,7 +28,9 @@
 
 use super::candidates::{Candidate, Param};
 use crate::effects::Effect;
-use crate::effects::rubber::{A2_MAX_PER_MM2, DEFAULT_PITCH_DIAMETER_M, SEED_AMPLITUDE_POLY};
+use crate::effects::rubber::{
+    A1_MAX_PER_MM, A2_MAX_PER_MM2, DEFAULT_PITCH_DIAMETER_M, SEED_AMPLITUDE_POLY,
+};
 use crate::model::AmplitudeForm;
 use crate::model::{ConnectionKind, Model, RubberStiffness};
 use crate::physics::{OperatingPoint, System};
@@ -58,6 +60,31 @@ pub fn elastic_candidate(model: &Model, j: usize) -> Option<Candidate> {
         param: amplitude_param(full_load_deformation_mm(model, j)),
         artifact_gains: None,
     })
+}
+
+/// The name of the elastic form fitted in `a1` ([`elastic_linear_candidate`]) among the
+/// amplitude candidates' forms ([`Candidate::form`]).
+pub const LINEAR_FORM: &str = "elastic_linear";
+
+/// The `coupling_amplitude_nonlinearity` candidate of form `elastic` at connection `j`
+/// of `model` whose stiffening grows linearly with the deformation: `a1` fitted, `a2` = 0
+/// (α_x = 1 + a1·x). A progressive coupling's stiffening need not be quadratic: with
+/// the bench's |Δθ| truths (development seeds 2015, 2059) the quadratic law, fitted to
+/// the regime of largest twist, overshoots the others. Bounded as
+/// [`elastic_candidate`]'s `a2`, by the stiffening at the full-load static twist.
+pub fn elastic_linear_candidate(model: &Model, j: usize) -> Option<Candidate> {
+    let mut c = elastic_candidate(model, j)?;
+    c.fixed.push(("a2", "0".to_string()));
+    c.param = linear_param(full_load_deformation_mm(model, j));
+    Some(c)
+}
+
+/// Whether `c` is one of the elastic amplitude candidates (screened in the time domain).
+pub fn is_elastic(c: &Candidate) -> bool {
+    c.effect == Effect::CouplingAmplitudeNonlinearity
+        && c.fixed
+            .iter()
+            .any(|(k, v)| *k == "form" && v == AmplitudeForm::Elastic.key())
 }
 
 /// The element deformation in mm at the static twist of connection `j` of `model` at full
@@ -101,6 +128,23 @@ pub fn amplitude_param(x_mm: Option<f64>) -> Param {
         start,
         lo: start * LOWEST_FRACTION,
         hi,
+        log: true,
+        resonance: false,
+        absent_at: Some(0.0),
+    }
+}
+
+/// The `a1` parameter (/mm) for a stage whose elements deform by `x_mm` at full load:
+/// the start and upper bound that give [`START_STIFFENING`] and [`MAX_STIFFENING`] there
+/// (held within [`A1_MAX_PER_MM`]); without a deformation, those at 1 mm.
+pub fn linear_param(x_mm: Option<f64>) -> Param {
+    let x = x_mm.filter(|x| x.is_finite() && *x > 0.0).unwrap_or(1.0);
+    let start = (START_STIFFENING / x).min(A1_MAX_PER_MM);
+    Param {
+        key: "a1",
+        start,
+        lo: start * LOWEST_FRACTION,
+        hi: (MAX_STIFFENING / x).min(A1_MAX_PER_MM),
         log: true,
         resonance: false,
         absent_at: Some(0.0),
@@ -196,5 +240,48 @@ mod tests {
             .expect("the stage");
         assert_eq!(stage.amplitude_form, AmplitudeForm::Elastic);
         assert_eq!(stage.amplitude_poly.map(|p| p.coeffs[0]), Some(c.param.hi));
+    }
+
+    #[test]
+    fn the_linear_form_fits_a1_with_a2_zero_within_its_bounds() {
+        let model = bench();
+        let j = model
+            .connections
+            .iter()
+            .position(|k| k.name == "coupling")
+            .expect("the coupling");
+        let c = elastic_linear_candidate(&model, j).expect("a linear elastic candidate");
+        assert_eq!(elastic_linear_candidate(&model, j + 100), None);
+        assert_eq!(c.form(), Some(LINEAR_FORM));
+        assert_eq!(
+            c.name(),
+            "coupling_amplitude_nonlinearity at coupling (elastic_linear)"
+        );
+        assert!(is_elastic(&c) && !super::super::screen::linear_sees(&c));
+        // α_x − 1 = a1·x at the full-load deformation x: 0.1 at the start, 1.0 at the
+        // upper bound (the stiffness doubled).
+        let x = full_load_deformation_mm(&model, j).expect("a deformation");
+        assert!((c.param.start * x - START_STIFFENING).abs() < 1e-12);
+        assert!((c.param.hi * x - MAX_STIFFENING).abs() < 1e-12);
+        assert_eq!(c.param.lo, c.param.start * LOWEST_FRACTION);
+        let (m, _) = c
+            .apply(&model, c.param.hi)
+            .expect("applies at its upper bound");
+        let stage = m
+            .connections
+            .iter()
+            .find_map(|k| match &k.kind {
+                ConnectionKind::Rubber(r) if k.name == "coupling" => Some(r.clone()),
+                _ => None,
+            })
+            .expect("the stage");
+        assert_eq!(stage.amplitude_form, AmplitudeForm::Elastic);
+        assert_eq!(
+            stage.amplitude_poly.map(|p| p.coeffs),
+            Some([0.0, c.param.hi, 1.0])
+        );
+        // Without a deformation: the values at 1 mm; a tiny one: held at the effect's limit.
+        assert_eq!(linear_param(None).start, START_STIFFENING);
+        assert_eq!(linear_param(Some(1e-6)).hi, A1_MAX_PER_MM);
     }
 }

@@ -212,26 +212,25 @@ impl Context<'_> {
             }
             f
         };
+        // An effect screened in the time domain keeps the value found there, out of the
+        // fitted vector: the surrogate is blind to it (backlash) or sees only its tangent
+        // at the static twist (an amplitude law set by the vibration).
+        let pinned = candidate
+            .filter(|c| !super::screen::linear_sees(c))
+            .and(at.value);
+        let value_of = |x: &[f64]| pinned.or_else(|| x.get(free.len()).copied());
         let build = |x: &[f64]| -> Option<(Model, Option<TapeJoint>)> {
             let m = scaled(self.user, &self.plain, &full(x)).ok()?;
             match candidate {
-                Some(c) => c.apply(&m, x[free.len()]).ok(),
+                Some(c) => c.apply(&m, value_of(x)?).ok(),
                 None => Some((m, at.joint.clone())),
             }
         };
         let mut start: Vec<f64> = free.iter().map(|i| at.factors[*i]).collect();
         let mut bounds = vec![PLAIN_BOUNDS; free.len()];
-        if let Some(c) = candidate {
+        if let (Some(c), None) = (candidate, pinned) {
             start.push(at.value.unwrap_or(c.param.start));
-            let mut b = super::branch::fit_bounds(c, at.value);
-            // An effect screened in the time domain keeps the value found there: the
-            // surrogate is blind to it (backlash) or sees only its tangent at the
-            // static twist (an amplitude law set by the vibration).
-            if let (false, Some(v)) = (super::screen::linear_sees(c), at.value) {
-                b.lo = v;
-                b.hi = v;
-            }
-            bounds.push(b);
+            bounds.push(super::branch::fit_bounds(c, at.value));
         }
         let correction = self.correction(at);
         let predict = |x: &[f64]| -> Option<Vec<f64>> {
@@ -282,7 +281,7 @@ impl Context<'_> {
         let (m, j) = build(&x).ok_or_else(|| DiagnoseError::Input("bad fit".into()))?;
         let simulated = predict(&x).ok_or_else(|| DiagnoseError::Input("bad fit".into()))?;
         let factors = full(&x);
-        let value = candidate.map(|_| x[free.len()]);
+        let value = candidate.and_then(|_| value_of(&x));
         Ok(self.scored(m, j, simulated, factors, value))
     }
 

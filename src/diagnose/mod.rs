@@ -67,6 +67,7 @@ pub mod report;
 pub mod report_parts;
 pub mod residual;
 pub mod restart;
+pub mod reversal;
 pub mod rounds;
 pub mod run;
 #[cfg(test)]

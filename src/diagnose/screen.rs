@@ -10,12 +10,9 @@ use super::candidates::Candidate;
 use super::context::{Context, Evaluated};
 use super::drift::{DRIFT_CHI2, long_run_drift};
 use super::observe::RunShape;
-use super::surrogate::{causal_system, run_speeds};
+use super::reversal::{REVERSAL_FRACTION, torque_reversal_runs};
 use super::trial;
 use crate::effects::Effect;
-use crate::model::AmplitudeForm;
-use crate::physics::Excitation;
-use crate::response::forced_response_orders;
 
 /// A screened candidate must lower the plain fit's score on the fitted data by this
 /// fraction to be verified in the time domain. Zero: any gain will do. The linear
@@ -101,7 +98,7 @@ impl Screened {
 pub fn linear_sees(c: &Candidate) -> bool {
     match c.effect {
         Effect::CouplingThermalDrift | Effect::GearBacklash | Effect::SensorArtifact => false,
-        Effect::CouplingAmplitudeNonlinearity => c.form() != Some(AmplitudeForm::Elastic.key()),
+        Effect::CouplingAmplitudeNonlinearity => !super::candidates_amplitude::is_elastic(c),
         _ => true,
     }
 }
@@ -109,45 +106,6 @@ pub fn linear_sees(c: &Candidate) -> bool {
 /// The runs of `cx` whose regime passes `keep`.
 fn runs_where(cx: &Context, keep: impl Fn(&RunShape) -> bool) -> Vec<bool> {
     cx.observed.runs.iter().map(|r| keep(&r.regime)).collect()
-}
-
-/// Backlash can only act where the torque through the gear reverses: its vibratory
-/// torque (every engine order up to 24, summed) reaches this fraction of the mean torque
-/// in the linear model (the fraction leaves room for the linear model's error).
-const REVERSAL_FRACTION: f64 = 0.8;
-
-/// The runs in which the linear model of `e` lets the torque in connection `name`
-/// reverse (at any speed of the run).
-fn torque_reversal_runs(cx: &Context, e: &Evaluated, name: &str) -> Vec<bool> {
-    let Some(k) = e.model.connections.iter().position(|c| c.name == name) else {
-        return vec![false; cx.observed.runs.len()];
-    };
-    let orders: Vec<f64> = (1..=48).map(|i| 0.5 * f64::from(i)).collect();
-    (0..cx.observed.runs.len())
-        .map(|r| {
-            let run = &cx.observed.runs[r];
-            let [lo, hi] = run_speeds(&cx.observed, r);
-            let steps = ((hi - lo) / 50.0).ceil().max(0.0) as usize;
-            let speeds: Vec<f64> = (0..=steps)
-                .map(|i| lo + (hi - lo) * i as f64 / steps.max(1) as f64)
-                .collect();
-            let Some(system) = causal_system(&e.model, run.load) else {
-                return false;
-            };
-            let mean = system.mean_torque_nm[k].unwrap_or(0.0).abs();
-            let excitation = Excitation::new(&e.model, &system, run.load, &orders);
-            let Ok(response) = forced_response_orders(&system, &excitation, &speeds) else {
-                return false;
-            };
-            let Some(j) = response.connections.iter().position(|c| *c == k) else {
-                return false;
-            };
-            (0..speeds.len()).any(|s| {
-                let vibratory: f64 = response.torque_amplitude_nm[j].iter().map(|q| q[s]).sum();
-                vibratory >= REVERSAL_FRACTION * mean
-            })
-        })
-        .collect()
 }
 
 /// Screens one candidate around the plain fit `plain` (a backlash also from `baseline`,

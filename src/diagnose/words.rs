@@ -57,12 +57,18 @@ pub fn effect_sentence(effect: &str, p: &BTreeMap<String, ParameterValue>) -> St
                 None => format!("No physics is missing, but a plain value is off: {which}."),
             }
         }
-        "coupling_amplitude_nonlinearity" => format!(
-            "The rubber of {} stiffens as it twists further (progressive elements): \
-             α_x = {}·x² + 1 with x the element deformation in mm.",
-            stage(p),
-            number(p, "a2").map_or("a₂".into(), sig)
-        ),
+        "coupling_amplitude_nonlinearity" => {
+            // The elastic form fitted in `a1` has `a2` = 0: α_x = a1·x + 1.
+            let law = match (number(p, "a1"), number(p, "a2")) {
+                (Some(a1), Some(0.0)) => format!("{}·x + 1", sig(a1)),
+                (_, a2) => format!("{}·x² + 1", a2.map_or("a₂".into(), sig)),
+            };
+            format!(
+                "The rubber of {} stiffens as it twists further (progressive elements): \
+                 α_x = {law} with x the element deformation in mm.",
+                stage(p)
+            )
+        }
         "coupling_frequency_dependence" => match number(p, "exponent") {
             Some(n) => format!(
                 "The rubber of {} is stiffer at higher vibration frequencies than its \

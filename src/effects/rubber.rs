@@ -23,6 +23,11 @@ pub const DEFAULT_PITCH_DIAMETER_M: f64 = 0.2;
 /// coefficient (issue 14), so the bound is set by the smallest deformation that means
 /// anything, not by the seed's elements.
 pub const A2_MAX_PER_MM2: f64 = 1.0e4;
+/// The largest `a1` of the amplitude law, /mm: 100, for the same reason as
+/// [`A2_MAX_PER_MM2`] (a progressive law linear in the deformation, `a2` = 0, stiffens a
+/// stage whose elements deform by 0.01 mm by 100 % at that bound); as much softening
+/// below zero.
+pub const A1_MAX_PER_MM: f64 = 100.0;
 /// Seed 000 eq. 9: α_f(f) = −0.000023 f² + 0.01519 f + 1, f in Hz (measured 50–300 Hz).
 pub const SEED_FREQUENCY_POLY: [f64; 3] = [-0.000023, 0.01519, 1.0];
 /// Seed 000 eq. 10: α_Tc(T), T in °C (measured 25–55 °C).
@@ -66,7 +71,7 @@ pub(super) fn stage_mut(model: &mut Model, j: usize) -> Result<&mut RubberStage,
 /// on its elastic spring only (`form = elastic`, [`AmplitudeForm::Elastic`]).
 /// A stage given by `stiffness` is first written as 8 elements, 4 per side, on pitch
 /// diameter `pitch_diameter_m` (default 0.2 m) with the same static stiffness. `a2` is
-/// taken up to [`A2_MAX_PER_MM2`].
+/// taken up to [`A2_MAX_PER_MM2`], `a1` within ±[`A1_MAX_PER_MM`].
 pub(crate) fn amplitude(model: &mut Model, spec: &EffectSpec) -> Result<Applied, EffectError> {
     let mut p = Params::new(
         spec,
@@ -83,7 +88,7 @@ pub(crate) fn amplitude(model: &mut Model, spec: &EffectSpec) -> Result<Applied,
         }
     };
     let a2 = p.number("a2", SEED_AMPLITUDE_POLY[0], 0.0, A2_MAX_PER_MM2)?;
-    let a1 = p.number("a1", SEED_AMPLITUDE_POLY[1], -0.5, 0.5)?;
+    let a1 = p.number("a1", SEED_AMPLITUDE_POLY[1], -A1_MAX_PER_MM, A1_MAX_PER_MM)?;
     let direct = match &stage_mut(model, j)?.stiffness {
         RubberStiffness::Direct(k) => Some(*k),
         RubberStiffness::Elements(_) => None,
