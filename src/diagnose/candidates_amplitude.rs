@@ -213,31 +213,40 @@ mod tests {
         assert_eq!(amplitude_param(Some(1e-6)).hi, A2_MAX_PER_MM2);
     }
 
-    #[test]
-    fn the_elastic_candidate_builds_an_elastic_stage_within_its_bounds() {
-        let model = bench();
-        let j = model
+    /// The index of the shipped bench's rubber stage `coupling`.
+    fn coupling(model: &Model) -> usize {
+        model
             .connections
             .iter()
             .position(|k| k.name == "coupling")
-            .expect("the coupling");
+            .expect("the coupling")
+    }
+
+    /// The stage `coupling` of `model` with candidate `c` applied at its upper bound.
+    fn stage_at_upper_bound(c: &Candidate, model: &Model) -> crate::model::RubberStage {
+        let (m, _) = c
+            .apply(model, c.param.hi)
+            .expect("applies at its upper bound");
+        m.connections
+            .iter()
+            .find_map(|k| match &k.kind {
+                ConnectionKind::Rubber(r) if k.name == "coupling" => Some(r.clone()),
+                _ => None,
+            })
+            .expect("the stage")
+    }
+
+    #[test]
+    fn the_elastic_candidate_builds_an_elastic_stage_within_its_bounds() {
+        let model = bench();
+        let j = coupling(&model);
         let c = elastic_candidate(&model, j).expect("an elastic amplitude candidate");
         assert_eq!(elastic_candidate(&model, j + 100), None);
         assert_eq!(
             c.name(),
             "coupling_amplitude_nonlinearity at coupling (elastic)"
         );
-        let (m, _) = c
-            .apply(&model, c.param.hi)
-            .expect("applies at its upper bound");
-        let stage = m
-            .connections
-            .iter()
-            .find_map(|k| match &k.kind {
-                ConnectionKind::Rubber(r) if k.name == "coupling" => Some(r.clone()),
-                _ => None,
-            })
-            .expect("the stage");
+        let stage = stage_at_upper_bound(&c, &model);
         assert_eq!(stage.amplitude_form, AmplitudeForm::Elastic);
         assert_eq!(stage.amplitude_poly.map(|p| p.coeffs[0]), Some(c.param.hi));
     }
@@ -245,11 +254,7 @@ mod tests {
     #[test]
     fn the_linear_form_fits_a1_with_a2_zero_within_its_bounds() {
         let model = bench();
-        let j = model
-            .connections
-            .iter()
-            .position(|k| k.name == "coupling")
-            .expect("the coupling");
+        let j = coupling(&model);
         let c = elastic_linear_candidate(&model, j).expect("a linear elastic candidate");
         assert_eq!(elastic_linear_candidate(&model, j + 100), None);
         assert_eq!(c.form(), Some(LINEAR_FORM));
@@ -264,17 +269,7 @@ mod tests {
         assert!((c.param.start * x - START_STIFFENING).abs() < 1e-12);
         assert!((c.param.hi * x - MAX_STIFFENING).abs() < 1e-12);
         assert_eq!(c.param.lo, c.param.start * LOWEST_FRACTION);
-        let (m, _) = c
-            .apply(&model, c.param.hi)
-            .expect("applies at its upper bound");
-        let stage = m
-            .connections
-            .iter()
-            .find_map(|k| match &k.kind {
-                ConnectionKind::Rubber(r) if k.name == "coupling" => Some(r.clone()),
-                _ => None,
-            })
-            .expect("the stage");
+        let stage = stage_at_upper_bound(&c, &model);
         assert_eq!(stage.amplitude_form, AmplitudeForm::Elastic);
         assert_eq!(
             stage.amplitude_poly.map(|p| p.coeffs),
