@@ -201,17 +201,14 @@ pub fn candidates(model: &Model, stations: &[String], long_run: bool) -> Vec<Can
                     param: p,
                     artifact_gains: None,
                 };
-                // Seed 000's form on the linear model, and the elastic form, `a2` bounded
-                // by the stage's own working twist, searched in the time domain
+                // Seed 000's form on the linear model, and the elastic forms (`a2`, `a1`)
+                // bounded by the stage's own working twist, searched in the time domain
                 // ([`super::candidates_amplitude`]).
                 out.push(add(
                     Effect::CouplingAmplitudeNonlinearity,
                     param("a2", 0.0152, 0.0, 0.5, false).absent_at(0.0),
                 ));
-                out.extend(super::candidates_amplitude::elastic_candidate(model, j));
-                out.extend(super::candidates_amplitude::elastic_linear_candidate(
-                    model, j,
-                ));
+                out.extend(super::candidates_amplitude::elastic_candidates(model, j));
                 out.push(add(
                     Effect::CouplingFrequencyDependence,
                     param("scale", 0.1, 0.0, 1.0, false).absent_at(0.0),

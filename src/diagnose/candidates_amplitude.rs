@@ -17,11 +17,12 @@
 //! stiffness, eq. 13–15) keeps the seed-scale bounds: widened alone it made the
 //! validation worse (717c786, reverted).
 //!
-//! [`elastic_candidate`] is one of the diagnosis' two amplitude candidates
-//! ([`super::candidates::candidates`]), beside the seed form on the linear model. It is
+//! [`elastic_candidates`] are two of the diagnosis' three amplitude candidates
+//! ([`super::candidates::candidates`]), beside the seed form on the linear model: the
+//! elastic law quadratic in the deformation (`a2`) and linear in it (`a1`). They are
 //! screened in the time domain ([`super::screen::linear_sees`]), where the stiffening the
-//! vibration itself sets is seen: `a2` is searched in `ln a2` from [`START_STIFFENING`]
-//! over three decades down ([`LOWEST_FRACTION`]). Screened on the linear model instead
+//! vibration itself sets is seen: the coefficient is searched in its log from
+//! [`START_STIFFENING`] over three decades down ([`LOWEST_FRACTION`]). Screened on the linear model instead
 //! (tangent at the static twist), it had named a `none` control (validation 1034) and a
 //! thermal drift (1038) as amplitude nonlinearity, and the seed form is pushed to its
 //! bound on every development case of the independent bench (2004–2081).
@@ -47,36 +48,38 @@ const SEED_HI_PER_MM2: f64 = 0.5;
 /// effect ([`super::candidates::Param::is_absent`]).
 pub const LOWEST_FRACTION: f64 = 1e-3;
 
-/// The `coupling_amplitude_nonlinearity` candidate of form `elastic` at connection `j`
-/// of `model` (`None` when `j` is no rubber stage): `a2` bounded by [`amplitude_param`].
-pub fn elastic_candidate(model: &Model, j: usize) -> Option<Candidate> {
-    let c = model.connections.get(j)?;
-    matches!(c.kind, ConnectionKind::Rubber(_)).then(|| Candidate {
+/// The name of the elastic form fitted in `a1` among the amplitude candidates' forms
+/// ([`Candidate::form`]).
+pub const LINEAR_FORM: &str = "elastic_linear";
+
+/// The `coupling_amplitude_nonlinearity` candidates of form `elastic` at connection `j`
+/// of `model` (none when `j` is no rubber stage), both bounded by the stiffening at the
+/// stage's full-load static twist, which is computed once for the two:
+/// - quadratic: `a2` fitted ([`amplitude_param`]), `a1` the seed's;
+/// - linear in the deformation ([`LINEAR_FORM`]): `a1` fitted ([`linear_param`]), `a2` =
+///   0 (α_x = 1 + a1·x). A progressive coupling's stiffening need not be quadratic: with
+///   the bench's |Δθ| truths (development seeds 2015, 2059) the quadratic law, fitted to
+///   the regime of largest twist, overshoots the others.
+pub fn elastic_candidates(model: &Model, j: usize) -> Vec<Candidate> {
+    let Some(c) = model.connections.get(j) else {
+        return Vec::new();
+    };
+    if !matches!(c.kind, ConnectionKind::Rubber(_)) {
+        return Vec::new();
+    }
+    let x_mm = full_load_deformation_mm(model, j);
+    let at = |param: Param| Candidate {
         effect: Effect::CouplingAmplitudeNonlinearity,
         fixed: vec![
             ("connection", c.name.clone()),
             ("form", AmplitudeForm::Elastic.key().to_string()),
         ],
-        param: amplitude_param(full_load_deformation_mm(model, j)),
+        param,
         artifact_gains: None,
-    })
-}
-
-/// The name of the elastic form fitted in `a1` ([`elastic_linear_candidate`]) among the
-/// amplitude candidates' forms ([`Candidate::form`]).
-pub const LINEAR_FORM: &str = "elastic_linear";
-
-/// The `coupling_amplitude_nonlinearity` candidate of form `elastic` at connection `j`
-/// of `model` whose stiffening grows linearly with the deformation: `a1` fitted, `a2` = 0
-/// (α_x = 1 + a1·x). A progressive coupling's stiffening need not be quadratic: with
-/// the bench's |Δθ| truths (development seeds 2015, 2059) the quadratic law, fitted to
-/// the regime of largest twist, overshoots the others. Bounded as
-/// [`elastic_candidate`]'s `a2`, by the stiffening at the full-load static twist.
-pub fn elastic_linear_candidate(model: &Model, j: usize) -> Option<Candidate> {
-    let mut c = elastic_candidate(model, j)?;
-    c.fixed.push(("a2", "0".to_string()));
-    c.param = linear_param(full_load_deformation_mm(model, j));
-    Some(c)
+    };
+    let mut linear = at(linear_param(x_mm));
+    linear.fixed.push(("a2", "0".to_string()));
+    vec![at(amplitude_param(x_mm)), linear]
 }
 
 /// Whether `c` is one of the elastic amplitude candidates (screened in the time domain).
@@ -240,8 +243,8 @@ mod tests {
     fn the_elastic_candidate_builds_an_elastic_stage_within_its_bounds() {
         let model = bench();
         let j = coupling(&model);
-        let c = elastic_candidate(&model, j).expect("an elastic amplitude candidate");
-        assert_eq!(elastic_candidate(&model, j + 100), None);
+        let c = elastic_candidates(&model, j)[0].clone();
+        assert!(elastic_candidates(&model, j + 100).is_empty());
         assert_eq!(
             c.name(),
             "coupling_amplitude_nonlinearity at coupling (elastic)"
@@ -255,8 +258,7 @@ mod tests {
     fn the_linear_form_fits_a1_with_a2_zero_within_its_bounds() {
         let model = bench();
         let j = coupling(&model);
-        let c = elastic_linear_candidate(&model, j).expect("a linear elastic candidate");
-        assert_eq!(elastic_linear_candidate(&model, j + 100), None);
+        let c = elastic_candidates(&model, j)[1].clone();
         assert_eq!(c.form(), Some(LINEAR_FORM));
         assert_eq!(
             c.name(),

@@ -108,8 +108,8 @@ fn runs_where(cx: &Context, keep: impl Fn(&RunShape) -> bool) -> Vec<bool> {
     cx.observed.runs.iter().map(|r| keep(&r.regime)).collect()
 }
 
-/// Screens one candidate around the plain fit `plain` (a backlash also from `baseline`,
-/// the user's model: [`super::restart::second_start_in_time`]); an error when it is not
+/// Screens one candidate around the plain fit `plain` (a backlash or an elastic amplitude
+/// law also from `baseline`, the user's model: [`super::restart::second_start_in_time`]); an error when it is not
 /// plausible (its signature is absent: [`DiagnoseError::Input`] says why) or cannot be
 /// fitted (a [`DiagnoseError::Simulation`]: the caller rejects it,
 /// [`Screened::rejected_at`]).
@@ -164,8 +164,8 @@ pub fn screen_one(
         }
         Effect::CouplingAmplitudeNonlinearity if !linear_sees(c) => {
             // Its stiffening is set by the vibration, which the linear model's tangent at
-            // the static twist cannot see (README, issue 14): its `a2` is searched in
-            // the time domain of the steady recordings (a run-up, several times longer,
+            // the static twist cannot see (README, issue 14): its coefficient (`a2` or
+            // `a1`) is searched in the time domain of the steady recordings (a run-up, several times longer,
             // only in verification).
             let runs = runs_where(cx, |r| !matches!(r, RunShape::Ramp { .. }));
             in_two_starts(
