@@ -30,6 +30,7 @@ impl Plant {
 
     /// Torque and dissipation of element `e` at state `y`; writes the arm derivatives of
     /// a rubber stage into `dy` when given.
+    #[inline]
     pub fn element_state(
         &self,
         e: &PlantElement,

@@ -56,13 +56,14 @@ pub(super) fn empty_simulation(plant: &Plant, samples: usize, settling: Settling
 /// state, which states are temperatures, how many samples the mean power is over.
 pub(super) struct Recorder<'a> {
     plant: &'a Plant,
-    /// Per node: the index of its DOF's speed in the state and `|speed ratio|`.
+    /// Per node: the index of its DOF's speed in the state and `|speed ratio|·60/2π`
+    /// (rad/s of the reference's shaft to rpm of the node's).
     nodes: Vec<(usize, f64)>,
     /// The temperature state of every thermal rubber stage, in the order of
     /// [`Simulation::temperature_c`].
     thermal: Vec<usize>,
-    /// Samples of the whole recording.
-    samples: f64,
+    /// 1 / samples of the whole recording.
+    per_sample: f64,
 }
 
 impl<'a> Recorder<'a> {
@@ -75,10 +76,10 @@ impl<'a> Recorder<'a> {
                 .dof_of_node
                 .iter()
                 .zip(&sys.speed_ratio)
-                .map(|(&dof, ratio)| (plant.n_dof + dof, ratio.abs()))
+                .map(|(&dof, ratio)| (plant.n_dof + dof, ratio.abs() * 60.0 / TAU))
                 .collect(),
             thermal: plant.thermal_states(),
-            samples: samples as f64,
+            per_sample: 1.0 / samples.max(1) as f64,
         }
     }
 
@@ -97,7 +98,7 @@ impl<'a> Recorder<'a> {
         let plant = self.plant;
         let big_omega = profile.at(t).1;
         for (speeds, &(state, ratio)) in sim.speed_rpm.iter_mut().zip(&self.nodes) {
-            speeds[k] = ratio * (big_omega + y[state]) * 60.0 / TAU;
+            speeds[k] = ratio * (big_omega + y[state]);
         }
         let rows = plant.output_rows.iter().copied();
         for (e, (row, first)) in plant.elements.iter().zip(rows) {
@@ -117,7 +118,7 @@ impl<'a> Recorder<'a> {
                     *last += state.power_w;
                 }
             }
-            sim.power_loss_w[row].1 += state.power_w / self.samples;
+            sim.power_loss_w[row].1 += state.power_w * self.per_sample;
         }
         for ((_, temps), &state) in sim.temperature_c.iter_mut().zip(&self.thermal) {
             temps[k] = y[state];

@@ -54,7 +54,7 @@ impl Stepper {
         match self {
             Stepper::Explicit(s) => &s.y,
             Stepper::Implicit(s) => &s.y,
-            Stepper::Exact(s) => &s.y,
+            Stepper::Exact(s) => s.y(),
         }
     }
 
@@ -100,6 +100,19 @@ impl Stepper {
             Stepper::Explicit(s) => s.step(t_end, rhs),
             Stepper::Implicit(s) => s.step(t_end, rhs),
             Stepper::Exact(s) => s.step(t_end),
+        }
+    }
+
+    /// The state at `t` within the last step: the integrator's own state when `t` is the
+    /// exact integrator's step end (where all its samples fall: no copy), else the dense
+    /// output written into `scratch`.
+    pub fn state_at<'a>(&'a self, t: f64, scratch: &'a mut [f64]) -> &'a [f64] {
+        match self {
+            Stepper::Exact(s) if s.is_at_end(t) => s.y(),
+            _ => {
+                self.interpolate(t, scratch);
+                scratch
+            }
         }
     }
 
