@@ -109,7 +109,7 @@ fn normal_solution(normal: &Normal, columns: &[usize]) -> Option<DVector<f64>> {
     let cholesky = g.cholesky()?;
     let diagonal = cholesky.l_dirty().diagonal();
     let (smallest, largest) = (diagonal.min(), diagonal.max());
-    if !(smallest > NORMAL_RANK_RATIO * largest) {
+    if !largest.is_finite() || smallest.is_nan() || smallest <= NORMAL_RANK_RATIO * largest {
         return None;
     }
     Some(cholesky.solve(&rhs))
@@ -126,7 +126,7 @@ fn qr_solution(sub: &DMatrix<f64>, b: &DVector<f64>) -> Option<DVector<f64>> {
     let r = qr.r();
     let diagonal = r.diagonal().map(f64::abs);
     let largest = diagonal.max();
-    if !(largest > 0.0) || diagonal.min() < QR_RANK_RATIO * largest {
+    if largest.is_nan() || largest <= 0.0 || diagonal.min() < QR_RANK_RATIO * largest {
         return None;
     }
     // Qᵀ·b by the Householder reflections themselves (forming Q cost as much as the QR).
