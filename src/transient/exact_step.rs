@@ -11,10 +11,11 @@
 //! the generic product's per-column dispatch was most of a step. The rows are taken in
 //! blocks of [`LANES`] (the state padded with zeros to whole blocks), each block's part
 //! of a matrix stored column after column, so a product runs each block of rows through
-//! the columns in registers (the compiler turns the lanes into vector instructions). Up
-//! to four blocks (a 16-entry augmented state) the even and odd columns go to two
-//! accumulators, so the sums differ from `gemv`'s by rounding only; beyond that, column
-//! after column as `gemv` adds them.
+//! the columns in registers (the compiler turns the lanes into vector instructions). Only
+//! the plant's rows are taken so; the constant's and the oscillators' rows below them
+//! are rotated by their few nonzeros. Up to four blocks of plant rows (a plant state of
+//! up to 16 entries) the even and odd columns go to two accumulators, so the sums differ
+//! from `gemv`'s by rounding only; beyond that, column after column as `gemv` adds them.
 
 use nalgebra::DMatrix;
 
