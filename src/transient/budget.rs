@@ -149,8 +149,12 @@ pub struct StepBudget {
 }
 
 impl StepBudget {
-    /// `Err` when `solver` has used more steps than the budget allows at its time.
+    /// `Err` when `solver` has used more steps than the budget allows at its time (never
+    /// for a fixed step, [`Stepper::adapts_step`]).
     pub fn check(&self, plant: &Plant, solver: &Stepper) -> Result<(), TransientError> {
+        if !solver.adapts_step() {
+            return Ok(());
+        }
         let (accepted, rejected) = solver.steps();
         let steps = accepted + rejected;
         let needed = solver.t() / self.h_max_s + STARTUP_STEPS;

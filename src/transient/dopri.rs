@@ -69,6 +69,8 @@ pub struct Dopri5 {
     f_prev: Vec<f64>,
     k: [Vec<f64>; 6],
     y_stage: Vec<f64>,
+    /// The step's error estimate per state (scratch).
+    error: Vec<f64>,
     /// Proposed next step, s.
     pub h: f64,
     /// Largest step allowed, s.
@@ -108,6 +110,7 @@ impl Dopri5 {
             f,
             k: std::array::from_fn(|_| vec![0.0; n]),
             y_stage: vec![0.0; n],
+            error: vec![0.0; n],
             h: h0.min(h_max),
             h_max,
             rtol,
@@ -135,25 +138,38 @@ impl Dopri5 {
                 });
             }
             // Stages 2..7; stage 7 is evaluated at the new point (FSAL).
+            // Each stage's sum runs over the state a term at a time (in the same order for
+            // every entry as a sum per entry, so the same numbers), which vectorizes.
             for s in 1..7 {
-                for i in 0..n {
-                    let mut acc = A[s][0] * self.f[i];
-                    for (j, kj) in self.k.iter().enumerate().take(s - 1) {
-                        acc += A[s][j + 1] * kj[i];
+                let a = &A[s];
+                for (acc, f) in self.y_stage.iter_mut().zip(&self.f) {
+                    *acc = a[0] * f;
+                }
+                for (kj, c) in self.k.iter().zip(&a[1..]).take(s - 1) {
+                    for (acc, k) in self.y_stage.iter_mut().zip(kj) {
+                        *acc += c * k;
                     }
-                    self.y_stage[i] = self.y[i] + h * acc;
+                }
+                for (acc, y) in self.y_stage.iter_mut().zip(&self.y) {
+                    *acc = y + h * *acc;
                 }
                 let (t_s, out) = (self.t + C[s] * h, s - 1);
                 rhs(t_s, &self.y_stage, &mut self.k[out]);
             }
             // y_stage holds the 5th-order solution (stage 7's argument); k[5] its f.
-            let mut sum = 0.0;
-            for i in 0..n {
-                let mut e = E[0] * self.f[i];
-                for (ej, kj) in E[1..].iter().zip(&self.k) {
-                    e += ej * kj[i];
+            let e = &mut self.error;
+            for (e, f) in e.iter_mut().zip(&self.f) {
+                *e = E[0] * f;
+            }
+            for (kj, c) in self.k.iter().zip(&E[1..]) {
+                for (e, k) in e.iter_mut().zip(kj) {
+                    *e += c * k;
                 }
-                let scale = self.atol[i] + self.rtol * self.y[i].abs().max(self.y_stage[i].abs());
+            }
+            let mut sum = 0.0;
+            let states = self.y.iter().zip(&self.y_stage).zip(&self.atol);
+            for (e, ((y, y_new), atol)) in e.iter().zip(states) {
+                let scale = atol + self.rtol * y.abs().max(y_new.abs());
                 let r = h * e / scale;
                 sum += r * r;
             }

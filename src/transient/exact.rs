@@ -9,10 +9,9 @@
 //! `z(t + h) = e^{hA}·z(t)` holds to rounding at any step (the Padé exponential of
 //! `nalgebra`, scaling and squaring).
 //!
-//! The remainder is what the harmonics add because they act at the *vibrating* crank angle
-//! `qΩt + q·θ_ref` (the time domain's crank-angle nonlinearity, ~1e-4 of the forcing):
-//! `N = T·[cos a·(cos δ − 1) − sin a·sin δ]`, `a = qΩt + φ`, `δ = q·θ_ref`, with `cos a`,
-//! `sin a` read off the oscillator states (no trigonometry per step; [`super::crank_remainder`]).
+//! The remainder `N` is what the harmonics add because they act at the *vibrating* crank
+//! angle (the time domain's crank-angle nonlinearity, ~1e-4 of the forcing; its formula
+//! and evaluation, without trigonometry per step, are [`super::crank_remainder`]'s).
 //! It is integrated by the second-order exponential Runge–Kutta method ETD2RK (Cox &
 //! Matthews, *J. Comput. Phys.* 176, 2002, eq. 22), whose `φ1`, `φ2` come from one
 //! exponential of a block matrix (Al-Mohy & Higham 2011, Thm. 2.1). The linear part is

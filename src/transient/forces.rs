@@ -4,6 +4,7 @@
 //! `α` the mean angular acceleration of a ramp, and the Maxwell arms and rubber
 //! temperatures as further states.
 
+use super::crank_angle::{small_sin_cos, wrap};
 use super::plant::{Plant, PlantElement, PlantLaw, RubberPlant, Temperature};
 use super::speed::SpeedProfile;
 use crate::model::AmplitudeForm;
@@ -118,7 +119,6 @@ impl Plant {
         if let Some(engine) = &self.engine {
             let m = engine.oscillating_mass_kg;
             let (r, lambda) = (engine.crank_radius_m, engine.lambda);
-            let samples = engine.pressure_pa.len() as f64;
             // The mean angle wrapped to the cycle once, and its sine and cosine: each
             // cylinder's angle is that plus its DOF's vibration minus its firing angle,
             // combined by the angle-addition formulas (the vibration angle is small).
@@ -145,9 +145,11 @@ impl Plant {
                 let (s2, c2) = (2.0 * s1 * c1, c1 * c1 - s1 * s1);
                 let rv = r * (s1 + 0.5 * lambda * s2);
                 let ra = r * (c1 + lambda * c2);
-                let x = phase / engine.cycle_rad * samples;
-                let k = (x as usize).min(engine.pressure_pa.len() - 1);
-                let next = engine.pressure_pa[(k + 1) % engine.pressure_pa.len()];
+                let x = phase * engine.pressure_points_per_rad;
+                let last = engine.pressure_pa.len() - 1;
+                let k = (x as usize).min(last);
+                // The next point, the first after the last (a `%` is an integer division).
+                let next = engine.pressure_pa[if k == last { 0 } else { k + 1 }];
                 let p = engine.pressure_pa[k] + (x - k as f64) * (next - engine.pressure_pa[k]);
                 let torque_own =
                     p * c.pressure_scale * engine.area_m2 * rv - m * speed * speed * ra * rv;
@@ -171,45 +173,6 @@ impl Plant {
             dy[n + i] = dy[n + i] / mass[i] - alpha;
         }
     }
-}
-
-/// `x` wrapped into `[0, cycle)` when it is within one cycle of it (the usual case).
-fn wrap(x: f64, cycle: f64) -> f64 {
-    if x < 0.0 {
-        if x + cycle >= 0.0 {
-            x + cycle
-        } else {
-            x.rem_euclid(cycle)
-        }
-    } else if x >= cycle {
-        if x - cycle < cycle {
-            x - cycle
-        } else {
-            x.rem_euclid(cycle)
-        }
-    } else {
-        x
-    }
-}
-
-/// Sine and cosine of a vibration angle: a Taylor series through x¹¹/x¹² for |x| < 0.25
-/// rad (truncation below 2e-17 relative), the library call beyond.
-fn small_sin_cos(x: f64) -> (f64, f64) {
-    if x.abs() >= 0.25 {
-        return x.sin_cos();
-    }
-    let x2 = x * x;
-    let s = x
-        * (1.0
-            - x2 / 6.0
-                * (1.0 - x2 / 20.0 * (1.0 - x2 / 42.0 * (1.0 - x2 / 72.0 * (1.0 - x2 / 110.0)))));
-    let c = 1.0
-        - x2 / 2.0
-            * (1.0
-                - x2 / 12.0
-                    * (1.0
-                        - x2 / 30.0 * (1.0 - x2 / 56.0 * (1.0 - x2 / 90.0 * (1.0 - x2 / 132.0)))));
-    (s, c)
 }
 
 /// The amplitude law's static curve, temperature factors and the chain: the stage's
@@ -261,12 +224,13 @@ fn rubber_state(
     let mut arms_torque = 0.0;
     let mut arms_power = 0.0;
     let mut dy = dy;
-    for (j, &(k, tau)) in r.chain.arms.iter().enumerate() {
+    let arms = r.chain.arms.iter().zip(&r.arm_rates_per_s).enumerate();
+    for (j, (&(k, _), &rate)) in arms {
         let stretch = twist_own - y[r.arm_offset + j];
         arms_torque += k * stretch;
-        arms_power += k * stretch * stretch / tau;
+        arms_power += k * stretch * stretch * rate;
         if let Some(d) = dy.as_deref_mut() {
-            d[r.arm_offset + j] = stretch / tau;
+            d[r.arm_offset + j] = stretch * rate;
         }
     }
     arms_torque += r.viscous_s * rate_own;
@@ -286,25 +250,12 @@ fn rubber_state(
 mod tests {
     use super::*;
 
-    #[test]
-    fn small_sin_cos_matches_the_library() {
-        for i in -1000..=1000 {
-            let x = 0.3 * i as f64 / 1000.0;
-            let (s, c) = small_sin_cos(x);
-            assert!(
-                (s - x.sin()).abs() < 2e-16 && (c - x.cos()).abs() < 2e-16,
-                "{x}"
-            );
-        }
-        assert!((wrap(-0.5, 4.0) - 3.5).abs() < 1e-15 && (wrap(4.5, 4.0) - 0.5).abs() < 1e-15);
-        assert!((wrap(-9.0, 4.0) - 3.0).abs() < 1e-15 && (wrap(13.0, 4.0) - 1.0).abs() < 1e-15);
-    }
-
     /// A stage of k0 = 5e4 N·m/rad with α_x = 1 + a2·x² (x = 100 mm/rad · |φ|), the
     /// `arms` of its chain, at 25 °C without temperature laws.
     fn cubic_plant(a2: f64, form: AmplitudeForm, arms: Vec<(f64, f64)>) -> RubberPlant {
         use crate::model::Poly;
         use crate::rubber::MaxwellChain;
+        let arm_rates_per_s = arms.iter().map(|(_, tau)| 1.0 / tau).collect();
         RubberPlant {
             static_stiffness_nm_per_rad: 5.0e4,
             mm_per_rad: Some(100.0),
@@ -326,6 +277,7 @@ mod tests {
             },
             static_twist_rad: 0.0,
             arm_offset: 0,
+            arm_rates_per_s,
             viscous_s: 0.0,
             temperature: Temperature::Fixed(25.0),
         }

@@ -13,6 +13,7 @@
 //!   end, and the element named when a step collapses or the budget runs out.
 
 pub mod budget;
+mod crank_angle;
 mod crank_remainder;
 pub mod dopri;
 mod error;

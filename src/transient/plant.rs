@@ -38,6 +38,9 @@ pub struct RubberPlant {
     pub static_twist_rad: f64,
     /// Index of the first arm state in the state vector.
     pub arm_offset: usize,
+    /// `1/τ` of each arm of [`RubberPlant::chain`], 1/s (the right-hand side multiplies
+    /// by it rather than divide by τ).
+    pub arm_rates_per_s: Vec<f64>,
     /// The dashpot that stands in for the arms too fast to integrate
     /// ([`MaxwellChain::take_fast_arms`]), relative stiffness × s (0: none).
     pub viscous_s: f64,
@@ -127,6 +130,8 @@ pub struct EnginePlant {
     pub oscillating_mass_kg: f64,
     /// Working cycle, rad.
     pub cycle_rad: f64,
+    /// Points of [`EnginePlant::pressure_pa`] per rad of the cycle: `len / cycle_rad`.
+    pub pressure_points_per_rad: f64,
     /// Gauge pressure in Pa on a uniform grid over the cycle from firing TDC, through
     /// order 48 ([`super::pressure`]).
     pub pressure_pa: Vec<f64>,
@@ -330,6 +335,7 @@ impl Plant {
                             damping_reference: stage
                                 .state(None, stage.temperature_c, 0.0)
                                 .alpha_txi,
+                            arm_rates_per_s: chain.arms.iter().map(|(_, tau)| 1.0 / tau).collect(),
                             chain,
                             static_twist_rad: system.static_twist_rad[j].unwrap_or(0.0),
                             arm_offset,
@@ -375,6 +381,7 @@ impl Plant {
                 lambda: engine::lambda(e),
                 oscillating_mass_kg: engine::oscillating_mass_kg(e),
                 cycle_rad,
+                pressure_points_per_rad: pressure_pa.len() as f64 / cycle_rad,
                 pressure_pa,
                 mean_torque_nm: cylinders
                     .iter()

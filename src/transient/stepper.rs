@@ -85,6 +85,12 @@ impl Stepper {
         }
     }
 
+    /// True when it chooses its step by an error estimate (and so can take more steps
+    /// than a run's budget allows); the exact integrator steps a fixed `h`.
+    pub fn adapts_step(&self) -> bool {
+        !matches!(self, Stepper::Exact(_))
+    }
+
     /// True for the explicit method.
     pub fn is_explicit(&self) -> bool {
         matches!(self, Stepper::Explicit(_))
