@@ -4,7 +4,8 @@
 //! [`Observation`](super::observe::Observation) gets its simulated counterpart.
 //!
 //! The runs are independent and run on `threads` worker threads, longest first; a long
-//! run-up is cut into one segment per thread ([`super::forward_runup`]).
+//! run-up is cut into [`forward_runup::SEGMENTS`] segments ([`super::forward_runup`]).
+//! The numbers do not depend on the thread count or on which thread ends first.
 
 use super::forward_runup::{self, BinSums};
 use super::observe::{LONG_RUN_BLOCKS, Observed, Run, RunShape, analysis_options, slice};
@@ -231,7 +232,11 @@ pub fn predict(
                 forward_runup::segments(
                     observed,
                     r,
-                    if warms_up(model) { 1 } else { threads },
+                    if warms_up(model) {
+                        1
+                    } else {
+                        forward_runup::SEGMENTS
+                    },
                     decays[r],
                 )
                 .into_iter()
@@ -247,7 +252,9 @@ pub fn predict(
     jobs.sort_by(|a, b| cost(b).total_cmp(&cost(a)));
     let next = AtomicUsize::new(0);
     let out = Mutex::new(vec![0.0; observed.observations.len()]);
-    let sums: Mutex<Vec<BinSums>> = Mutex::new(vec![BinSums::new(); observed.runs.len()]);
+    // Each segment's bins by job, added up in job order once all have ended: added as
+    // they ended, the sums' rounding depended on which thread finished first.
+    let parts: Mutex<Vec<Option<(usize, BinSums)>>> = Mutex::new(vec![None; jobs.len()]);
     let failure = Mutex::new(None);
     std::thread::scope(|scope| {
         for _ in 0..threads.min(jobs.len().max(1)) {
@@ -276,8 +283,8 @@ pub fn predict(
                             }
                         }
                         Ok(Done::Sums(part)) => {
-                            if let Ok(mut sums) = sums.lock() {
-                                forward_runup::accumulate(&mut sums[r], part);
+                            if let Ok(mut parts) = parts.lock() {
+                                parts[k] = Some((r, part));
                             }
                         }
                         Err(e) => {
@@ -296,7 +303,15 @@ pub fn predict(
     }
     let panicked = || ("all".to_string(), "a worker thread panicked".to_string());
     let mut out = out.into_inner().map_err(|_| panicked())?;
-    let sums = sums.into_inner().map_err(|_| panicked())?;
+    let mut sums = vec![BinSums::new(); observed.runs.len()];
+    for (r, part) in parts
+        .into_inner()
+        .map_err(|_| panicked())?
+        .into_iter()
+        .flatten()
+    {
+        forward_runup::accumulate(&mut sums[r], part);
+    }
     for (i, o) in observed.observations.iter().enumerate() {
         if !matches!(observed.runs[o.run].regime, RunShape::Ramp { .. }) {
             continue;
