@@ -5,6 +5,7 @@
 
 use super::TransientError;
 use super::plant::{Plant, PlantElement, PlantLaw, Temperature};
+use super::speed::SpeedProfile;
 use super::stepper::Stepper;
 
 /// Steps a well-posed run may take before any time has passed (start-up, the first
@@ -224,4 +225,28 @@ pub fn bound_thermal_time_constants(plant: &mut Plant, tau_min_s: f64) -> Vec<St
         }
     }
     warnings
+}
+
+/// Stops a run whose state is not finite or beyond any physical bound.
+pub(super) fn check_state(
+    plant: &Plant,
+    t: f64,
+    y: &[f64],
+    profile: &SpeedProfile,
+) -> Result<(), TransientError> {
+    let n = plant.n_dof;
+    let speed_limit = 10.0 * profile.at(t).1 + 1000.0;
+    for (i, &v) in y.iter().enumerate() {
+        let bad = !v.is_finite()
+            || (i >= n && i < 2 * n && v.abs() > speed_limit)
+            || (i < n && v.abs() > 1.0e3);
+        if bad {
+            return Err(TransientError::Diverged {
+                time_s: t,
+                state: state_name(plant, i),
+                value: v,
+            });
+        }
+    }
+    Ok(())
 }

@@ -3,7 +3,8 @@
 //! the mean power it dissipates, every thermal stage's temperature.
 
 use super::plant::{Plant, PlantLaw, Temperature};
-use super::run::{Settling, Simulation};
+use super::run::Simulation;
+use super::settle::Settling;
 use super::speed::SpeedProfile;
 use std::f64::consts::TAU;
 

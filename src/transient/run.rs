@@ -3,7 +3,7 @@
 //! output rate (a steady speed for a duration, or a linear speed ramp).
 
 use super::TransientError;
-use super::budget::{StepBudget, bound_thermal_time_constants, name_collapse, state_name};
+use super::budget::{StepBudget, bound_thermal_time_constants, check_state, name_collapse};
 use super::dopri::Dopri5;
 use super::exact::Exact;
 use super::observe::{Event, take_chunk};
@@ -11,6 +11,7 @@ use super::periodic_start::add_periodic_state;
 use super::plant::{Plant, PlantLaw, Temperature};
 use super::record::{Recorder, empty_simulation};
 use super::ros2::Ros2;
+use super::settle::{Course, SettleRule, Settling, settle};
 use super::speed::SpeedProfile;
 use super::start::initial_state;
 use super::stepper::{Method, Stepper, is_stiff};
@@ -76,19 +77,6 @@ impl Default for RunOptions {
             step_budget_factor: None,
         }
     }
-}
-
-/// How the settling went.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Settling {
-    /// Working cycles integrated before recording.
-    pub cycles: usize,
-    /// Simulated time before recording, s.
-    pub time_s: f64,
-    /// Last cycle-to-cycle change (relative).
-    pub change: f64,
-    /// True when the change fell below the tolerance.
-    pub converged: bool,
 }
 
 /// A recorded simulation: what a bench would have measured, and more.
@@ -256,12 +244,20 @@ fn run_recorded(
         profile: &profile,
         budget: &budget,
     };
+    // Integration error makes the change noisy at ~rtol: never ask for less than 20×.
+    let rule = SettleRule {
+        tolerance: settle_options
+            .settle_tolerance
+            .max(20.0 * settle_options.rtol),
+        min_settle_s: settle_options.min_settle_s,
+        max_settle_s: settle_options.max_settle_s,
+    };
     let settling = settle(
         course,
         &mut mass,
         &mut solver,
         cycle_s(from_rpm),
-        settle_options,
+        rule,
         &mut |f| observer(Event::Progress(f)),
     )?;
     let t0 = solver.t();
@@ -317,89 +313,6 @@ fn run_recorded(
     Ok(sim)
 }
 
-/// What settling integrates: the plant, its speed profile and the run's step budget.
-#[derive(Clone, Copy)]
-struct Course<'a> {
-    plant: &'a Plant,
-    profile: &'a SpeedProfile,
-    budget: &'a StepBudget,
-}
-
-/// Integrates whole working cycles until the cycle-to-cycle change of the speeds is below
-/// tolerance (at least three cycles, and at least [`RunOptions::min_settle_s`]).
-///
-/// A self-heating rubber's temperature is held at its start value meanwhile: settling
-/// removes the mechanical transient (cycles), the rubber warms over its thermal time
-/// constant (minutes), and the recorded run starts at the model's `temperature_c`
-/// whatever settling took. Letting it warm made the start depend on the settling time: a
-/// steady regime at resonance of the diagnosis bench (3960 rpm, 30 % load, capacity 192
-/// J/K) settled in 13 s and started 15 K warm, with twice the order-2 amplitude.
-fn settle(
-    course: Course,
-    mass: &mut [f64],
-    solver: &mut Stepper,
-    cycle_s: f64,
-    options: RunOptions,
-    progress: &mut dyn FnMut(f64) -> bool,
-) -> Result<Settling, TransientError> {
-    let Course {
-        plant,
-        profile,
-        budget,
-    } = course;
-    let n = plant.n_dof;
-    let held = plant.thermal_states();
-    let mut previous: Vec<f64> = solver.y()[n..2 * n].to_vec();
-    let mut settling = Settling {
-        cycles: 0,
-        time_s: 0.0,
-        change: f64::INFINITY,
-        converged: false,
-    };
-    let max_cycles = (options.max_settle_s / cycle_s).ceil().max(3.0) as usize;
-    while settling.cycles < max_cycles {
-        let t_end = solver.t() + cycle_s;
-        let mut peak: f64 = 0.0;
-        while solver.t() < t_end - 1e-12 * t_end.max(1.0) {
-            let mut rhs = |t: f64, y: &[f64], dy: &mut [f64]| {
-                plant.derivatives(t, y, dy, profile, mass);
-                for &s in &held {
-                    dy[s] = 0.0;
-                }
-            };
-            solver
-                .step(t_end, &mut rhs)
-                .map_err(|e| name_collapse(plant, solver, e))?;
-            budget.check(plant, solver)?;
-            check_state(plant, solver.t(), solver.y(), profile)?;
-            peak = solver.y()[n..2 * n]
-                .iter()
-                .fold(peak, |m, v| m.max(v.abs()));
-        }
-        settling.cycles += 1;
-        let scale = peak.max(1e-9 * profile.at(solver.t()).1);
-        settling.change = solver.y()[n..2 * n]
-            .iter()
-            .zip(&previous)
-            .fold(0.0_f64, |m, (a, b)| m.max((a - b).abs()))
-            / scale;
-        previous.copy_from_slice(&solver.y()[n..2 * n]);
-        settling.time_s = solver.t();
-        if !progress(0.1 * settling.cycles as f64 / max_cycles as f64) {
-            return Err(TransientError::Cancelled { time_s: solver.t() });
-        }
-        // Integration error makes the change noisy at ~rtol: never ask for less than 20×.
-        if settling.cycles >= 3
-            && settling.time_s >= options.min_settle_s
-            && settling.change < options.settle_tolerance.max(20.0 * options.rtol)
-        {
-            settling.converged = true;
-            break;
-        }
-    }
-    Ok(settling)
-}
-
 /// Absolute tolerances: angles 1e-8 rad, speeds 1e-6 rad/s, arms 1e-8 rad, 1e-4 °C.
 fn tolerances(plant: &Plant) -> Vec<f64> {
     let n = plant.n_dof;
@@ -413,28 +326,4 @@ fn tolerances(plant: &Plant) -> Vec<f64> {
         }
     }
     atol
-}
-
-/// Stops a run whose state is not finite or beyond any physical bound.
-fn check_state(
-    plant: &Plant,
-    t: f64,
-    y: &[f64],
-    profile: &SpeedProfile,
-) -> Result<(), TransientError> {
-    let n = plant.n_dof;
-    let speed_limit = 10.0 * profile.at(t).1 + 1000.0;
-    for (i, &v) in y.iter().enumerate() {
-        let bad = !v.is_finite()
-            || (i >= n && i < 2 * n && v.abs() > speed_limit)
-            || (i < n && v.abs() > 1.0e3);
-        if bad {
-            return Err(TransientError::Diverged {
-                time_s: t,
-                state: state_name(plant, i),
-                value: v,
-            });
-        }
-    }
-    Ok(())
 }
