@@ -9,7 +9,6 @@
 
 use super::forward_runup::{self, BinSums};
 use super::observe::{LONG_RUN_BLOCKS, Observed, Run, RunShape, analysis_options, slice};
-use super::observe_runup::bin_means;
 use super::settling;
 use crate::model::{ConnectionKind, Model};
 use crate::recording::{Channel, ChannelKind, Recording, RecordingMeta, RunKind as RecKind};
@@ -254,7 +253,7 @@ pub fn predict(
     let out = Mutex::new(vec![0.0; observed.observations.len()]);
     // Each segment's bins by job, added up in job order once all have ended: added as
     // they ended, the sums' rounding depended on which thread finished first.
-    let parts: Mutex<Vec<Option<(usize, BinSums)>>> = Mutex::new(vec![None; jobs.len()]);
+    let parts: Mutex<Vec<Option<BinSums>>> = Mutex::new(vec![None; jobs.len()]);
     let failure = Mutex::new(None);
     std::thread::scope(|scope| {
         for _ in 0..threads.min(jobs.len().max(1)) {
@@ -284,7 +283,7 @@ pub fn predict(
                         }
                         Ok(Done::Sums(part)) => {
                             if let Ok(mut parts) = parts.lock() {
-                                parts[k] = Some((r, part));
+                                parts[k] = Some(part);
                             }
                         }
                         Err(e) => {
@@ -304,24 +303,15 @@ pub fn predict(
     let panicked = || ("all".to_string(), "a worker thread panicked".to_string());
     let mut out = out.into_inner().map_err(|_| panicked())?;
     let mut sums = vec![BinSums::new(); observed.runs.len()];
-    for (r, part) in parts
-        .into_inner()
-        .map_err(|_| panicked())?
-        .into_iter()
-        .flatten()
-    {
-        forward_runup::accumulate(&mut sums[r], part);
+    let parts = parts.into_inner().map_err(|_| panicked())?;
+    for (job, part) in jobs.iter().zip(parts) {
+        if let (Job::Segment(seg), Some(part)) = (job, part) {
+            forward_runup::accumulate(&mut sums[seg.run], part);
+        }
     }
     for (i, o) in observed.observations.iter().enumerate() {
-        if !matches!(observed.runs[o.run].regime, RunShape::Ramp { .. }) {
-            continue;
-        }
-        if let Some((sum, count)) = sums[o.run].get(&(o.station.clone(), o.order.to_bits())) {
-            out[i] = bin_means(sum, count)
-                .get(o.part)
-                .copied()
-                .filter(|v| v.is_finite())
-                .unwrap_or(0.0);
+        if matches!(observed.runs[o.run].regime, RunShape::Ramp { .. }) {
+            out[i] = forward_runup::observation_rpm(&sums[o.run], o);
         }
     }
     Ok(out)

@@ -8,8 +8,8 @@
 //! measured windows nearest in time; the bins' sums and window counts of all segments add
 //! up.
 
-use super::observe::{Observed, RunShape, analysis_options, slice};
-use super::observe_runup::bins;
+use super::observe::{Observation, Observed, RunShape, analysis_options, slice};
+use super::observe_runup::{bin_means, bins};
 use crate::model::Model;
 use crate::recording::RunKind as RecKind;
 use crate::signal::analyse_with;
@@ -179,6 +179,15 @@ pub fn predict_segment(
         }
     }
     Ok(out)
+}
+
+/// The simulated amplitude of run-up observation `o` from its run's bin `sums`, rpm: the
+/// mean of its bin (0 where no simulated window fell in it).
+pub fn observation_rpm(sums: &BinSums, o: &Observation) -> f64 {
+    sums.get(&(o.station.clone(), o.order.to_bits()))
+        .and_then(|(sum, count)| bin_means(sum, count).get(o.part).copied())
+        .filter(|v| v.is_finite())
+        .unwrap_or(0.0)
 }
 
 /// Adds the bin sums of one segment to those of the others.

@@ -4,9 +4,8 @@
 
 use super::LabelledRecording;
 use super::forward::predict;
-use super::forward_runup::{predict_segment, segments};
+use super::forward_runup::{observation_rpm, predict_segment, segments};
 use super::observe::{Observed, RunShape, observe};
-use super::observe_runup::bin_means;
 use super::settling::slowest_decay_s;
 use crate::modal::{damped_modes, modes};
 use crate::model::{Model, parse_model};
@@ -109,12 +108,7 @@ fn one_segment(model: &Model, observed: &Observed) -> Vec<f64> {
     observed
         .observations
         .iter()
-        .map(|o| {
-            sums.get(&(o.station.clone(), o.order.to_bits()))
-                .and_then(|(sum, count)| bin_means(sum, count).get(o.part).copied())
-                .filter(|v| v.is_finite())
-                .unwrap_or(0.0)
-        })
+        .map(|o| observation_rpm(&sums, o))
         .collect()
 }
 

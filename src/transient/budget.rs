@@ -1,7 +1,8 @@
 //! What holds a run back, named for a person (issue 13: "the step size collapsed … at
 //! t = 0" must name the element): the state behind an error estimate, the fastest rate of
-//! each element, the step budget that stops a run which would not end, and the bound on a
-//! rubber stage's thermal time constant.
+//! each element, the step budget that stops a run which would not end, the check that
+//! stops a run whose state diverges, and the bound on a rubber stage's thermal time
+//! constant.
 
 use super::TransientError;
 use super::plant::{Plant, PlantElement, PlantLaw, Temperature};

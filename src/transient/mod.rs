@@ -6,11 +6,12 @@
 //!   Maxwell chain ([`crate::rubber`]) and self-heating, gear backlash, a speed governor at the
 //!   load of a free driveline;
 //! - [`dopri`]: Dormand–Prince 5(4) with error control and dense output;
-//! - [`run`]: settling cycle by cycle, then recording a steady run or a ramp
+//! - [`run`]: settling cycle by cycle (`settle`), then recording a steady run or a ramp
 //!   ([`speed`]); [`observe`]: the run reported in chunks while it goes;
 //! - [`validate`]: what a run may ask for, checked against [`crate::limits`] before
 //!   anything is allocated; [`budget`]: the step budget that stops a run which would not
-//!   end, and the element named when a step collapses or the budget runs out.
+//!   end, the state check that stops one which diverges, and the element named when a
+//!   step collapses or the budget runs out.
 
 pub mod budget;
 mod crank_angle;

@@ -230,27 +230,22 @@ fn run_recorded(
             ))
         }
     };
-    // A ramp is itself a transient: settling its start to 1e-3 of the vibration is enough.
-    let settle_options = if run.is_ramp() {
-        RunOptions {
-            settle_tolerance: options.settle_tolerance.max(1e-3),
-            ..options
-        }
-    } else {
-        options
-    };
     let course = Course {
         plant: &plant,
         profile: &profile,
         budget: &budget,
     };
+    // A ramp is itself a transient: settling its start to 1e-3 of the vibration is enough.
     // Integration error makes the change noisy at ~rtol: never ask for less than 20×.
+    let tolerance = if run.is_ramp() {
+        options.settle_tolerance.max(1e-3)
+    } else {
+        options.settle_tolerance
+    };
     let rule = SettleRule {
-        tolerance: settle_options
-            .settle_tolerance
-            .max(20.0 * settle_options.rtol),
-        min_settle_s: settle_options.min_settle_s,
-        max_settle_s: settle_options.max_settle_s,
+        tolerance: tolerance.max(20.0 * options.rtol),
+        min_settle_s: options.min_settle_s,
+        max_settle_s: options.max_settle_s,
     };
     let settling = settle(
         course,
