@@ -230,6 +230,17 @@ fn backlash_and_imbalance_set_one_key() {
         _ => panic!("gear first"),
     }
     assert_eq!(t, user);
+    // A softened contact: ε is the given share of the half play (0.3 × 0.1°).
+    let spec = EffectSpec::new(Effect::GearBacklash)
+        .with("backlash_deg", 0.2)
+        .with("softening", 0.3);
+    match &truth(&user, &spec).model.connections[0].kind {
+        ConnectionKind::Gear(g) => {
+            assert_eq!(g.backlash_deg, 0.2);
+            assert!((g.backlash_softening_deg - 0.03).abs() < 1e-15);
+        }
+        _ => panic!("gear first"),
+    }
     let spec = EffectSpec::new(Effect::CylinderImbalance)
         .with("cylinder", 3)
         .with("pressure_scale", 0.95);

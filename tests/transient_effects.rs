@@ -194,3 +194,82 @@ phase_deg = 0.0
     assert!(message.contains("diverged at t = "), "{message}");
     assert!(message.contains("`a`"), "{message}");
 }
+
+/// A gear of mesh stiffness k = 4e5 N·m/rad, ratio 0.5 and 0.4° of play, its contact
+/// softened over ε = 0.05°: the plant's mesh torque is k·s(δ) at every twist δ (rad at
+/// the `to` side), s the softened dead zone ½[(δ−h) + √((δ−h)² + ε²)] + ½[(δ+h) −
+/// √((δ+h)² + ε²)], written out here apart from the library's. Inside the play a
+/// little torque passes, at the play's edge half the hard law's slope acts, and the
+/// model file keeps the key through a write and a read.
+#[test]
+fn a_softened_gear_contact_passes_the_softened_dead_zone_torque() {
+    let text = r#"format = 1
+name = "softened contact"
+[[inertia]]
+name = "pinion"
+inertia = 0.01
+[[inertia]]
+name = "wheel"
+inertia = 0.2
+[[connection]]
+kind = "gear"
+name = "mesh"
+from = "pinion"
+to = "wheel"
+ratio = 0.5
+mesh_stiffness = 4.0e5
+backlash_deg = 0.4
+backlash_softening_deg = 0.05
+"#;
+    let model = parse_model(text, "soft.toml").unwrap();
+    let again = parse_model(&torsim::model::to_toml_string(&model), "again.toml").unwrap();
+    assert_eq!(again, model, "the key survives a write and a read");
+    let plant = torsim::transient::plant::Plant::new(&model, 1.0, None).unwrap();
+    let e = &plant.elements[0];
+    let (k, h, eps) = (4.0e5, 0.2f64.to_radians(), 0.05f64.to_radians());
+    let soft = |d: f64| {
+        let a = d - h;
+        let b = d + h;
+        0.5 * (a + (a * a + eps * eps).sqrt()) + 0.5 * (b - (b * b + eps * eps).sqrt())
+    };
+    let n = 2 * plant.n_dof;
+    for twist_over_h in [-3.0, -1.0, -0.5, 0.0, 0.2, 0.9, 1.0, 1.1, 2.0, 5.0] {
+        // The twist at the `to` side for the pinion at angle a and the wheel at rest.
+        let mut y = vec![0.0; n];
+        let d = twist_over_h * h;
+        let pinion = e.from_dof.unwrap();
+        y[pinion] = d / e.ratio;
+        let t = plant.element_state(e, &y, None).torque_ref_nm;
+        let expected = k * soft(d) * e.ratio;
+        assert!(
+            (t - expected).abs() <= 1e-12 * (k * h).max(expected.abs()),
+            "δ/h = {twist_over_h}: {t} N·m against {expected}"
+        );
+        if twist_over_h.abs() < 1.0 && twist_over_h != 0.0 {
+            assert!(t != 0.0, "a softened contact passes torque inside the play");
+        }
+    }
+    // The linear views take the law's tangent where the mean torque (none here) puts the
+    // mesh: at δ = 0 the slope is 1 − h/√(h² + ε²) = 2.99 % of k (referred: × 0.5²).
+    // A hard contact keeps k, its flanks taken as touching.
+    let point = torsim::physics::OperatingPoint {
+        load: 1.0,
+        temperature_c: None,
+    };
+    let referred = |m: &torsim::model::Model| {
+        let system = torsim::physics::System::new(m, point).unwrap();
+        system.elements[0].stiffness_at(0.0).0
+    };
+    let share = 1.0 - h / (h * h + eps * eps).sqrt();
+    let soft_k = referred(&model);
+    assert!(
+        (soft_k - k * 0.25 * share).abs() < 1e-9 * k,
+        "{soft_k} against {}",
+        k * 0.25 * share
+    );
+    let mut hard = model.clone();
+    if let torsim::model::ConnectionKind::Gear(g) = &mut hard.connections[0].kind {
+        g.backlash_softening_deg = 0.0;
+    }
+    assert_eq!(referred(&hard), k * 0.25);
+}

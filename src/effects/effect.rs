@@ -208,6 +208,21 @@ impl<'a> Params<'a> {
         Ok(x)
     }
 
+    /// A number within `[lo, hi]` when `key` is given (and then recorded), else `None`:
+    /// a refinement whose absence leaves the effect as it was.
+    pub fn optional_number(
+        &mut self,
+        key: &str,
+        lo: f64,
+        hi: f64,
+    ) -> Result<Option<f64>, EffectError> {
+        if self.given.contains_key(key) {
+            self.number(key, lo, lo, hi).map(Some)
+        } else {
+            Ok(None)
+        }
+    }
+
     /// A name, or `default` (`None`: required unless the caller has one).
     pub fn text(&mut self, key: &str, default: Option<String>) -> Result<String, EffectError> {
         let value = match (self.given.get(key), default) {

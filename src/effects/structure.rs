@@ -232,9 +232,11 @@ pub(crate) fn crank_inertia(model: &mut Model, spec: &EffectSpec) -> Result<Appl
 }
 
 /// `gear_backlash`: gear `connection` (default the first with a mesh stiffness) has
-/// `backlash_deg` of total free play at its `to` side (default 0.2°).
+/// `backlash_deg` of total free play at its `to` side (default 0.2°), its tooth contact
+/// softened over `softening` times the half play (default 0: a hard contact;
+/// [`crate::model::Gear::backlash_softening_deg`]).
 pub(crate) fn backlash(model: &mut Model, spec: &EffectSpec) -> Result<Applied, EffectError> {
-    let mut p = Params::new(spec, &["connection", "backlash_deg"])?;
+    let mut p = Params::new(spec, &["connection", "backlash_deg", "softening"])?;
     let first = model
         .connections
         .iter()
@@ -244,6 +246,7 @@ pub(crate) fn backlash(model: &mut Model, spec: &EffectSpec) -> Result<Applied, 
         .map(|c| c.name.clone());
     let name = p.text("connection", first)?;
     let deg = p.number("backlash_deg", 0.2, 1e-6, 10.0)?;
+    let softening = p.optional_number("softening", 0.0, 10.0)?.unwrap_or(0.0);
     let Some(c) = model.connections.iter_mut().find(|c| c.name == name) else {
         return Err(p.bad("connection", format!("no connection `{name}`")));
     };
@@ -260,7 +263,13 @@ pub(crate) fn backlash(model: &mut Model, spec: &EffectSpec) -> Result<Applied, 
         return Err(p.bad("connection", format!("gear `{name}` already has backlash")));
     }
     g.backlash_deg = deg;
-    let summary = format!("gear `{name}` has {deg}° of free play at its output side");
+    g.backlash_softening_deg = 0.5 * softening * deg;
+    let contact = if softening > 0.0 {
+        format!(", its contact softened over {softening} of the half play")
+    } else {
+        String::new()
+    };
+    let summary = format!("gear `{name}` has {deg}° of free play at its output side{contact}");
     Ok((p.resolved, summary))
 }
 

@@ -194,7 +194,15 @@ fn connection(t: &Tab) -> Result<Connection, ModelError> {
             ],
             rubber,
         ),
-        "gear" => (&["ratio", "mesh_stiffness", "backlash_deg"], gear),
+        "gear" => (
+            &[
+                "ratio",
+                "mesh_stiffness",
+                "backlash_deg",
+                "backlash_softening_deg",
+            ],
+            gear,
+        ),
         other => {
             return Err(ModelError::at(
                 t.key("kind"),
@@ -316,5 +324,6 @@ fn gear(t: &Tab) -> Result<ConnectionKind, ModelError> {
         ratio: t.f64("ratio")?,
         mesh_stiffness_nm_per_rad: t.opt_f64("mesh_stiffness")?,
         backlash_deg: t.f64_or("backlash_deg", 0.0)?,
+        backlash_softening_deg: t.f64_or("backlash_softening_deg", 0.0)?,
     }))
 }

@@ -214,6 +214,13 @@ pub struct Gear {
     pub mesh_stiffness_nm_per_rad: Option<f64>,
     /// Total free play at the `to` side, degrees (default 0).
     pub backlash_deg: f64,
+    /// Width ε of the tooth contact's softening, degrees at the `to` side (default 0: a
+    /// hard contact). The mesh deflection is then the softened dead zone
+    /// s(δ) = ½[(δ−h) + √((δ−h)² + ε²)] + ½[(δ+h) − √((δ+h)² + ε²)], h the half play:
+    /// the contact stiffness rises from half to 95 % of the mesh stiffness over 2ε after
+    /// the play closes, as Hertzian contact and profile errors make it. Ignored without
+    /// backlash.
+    pub backlash_softening_deg: f64,
 }
 
 impl Model {

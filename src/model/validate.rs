@@ -203,6 +203,7 @@ fn connections(model: &Model) -> Check {
                     positive(&k("mesh_stiffness"), mesh)?;
                 }
                 non_negative(&k("backlash_deg"), g.backlash_deg)?;
+                non_negative(&k("backlash_softening_deg"), g.backlash_softening_deg)?;
             }
         }
     }

@@ -148,6 +148,7 @@ fn connection(out: &mut String, c: &Connection) {
                 kv(out, "mesh_stiffness", num(k));
             }
             opt_kv(out, "backlash_deg", g.backlash_deg, 0.0);
+            opt_kv(out, "backlash_softening_deg", g.backlash_softening_deg, 0.0);
         }
     }
 }

@@ -5,6 +5,7 @@
 //! twist of the rubber stages under the mean torque ([`static_twist`]); the engine torque
 //! of seed 001 eq. 3–5 and its harmonics per order ([`engine`], [`excitation`]).
 
+pub(crate) mod dead_zone;
 pub mod distributed;
 pub mod element;
 pub mod engine;

@@ -1,9 +1,11 @@
-//! The mean torque through every connection: the engine's cycle-mean torque enters at the
-//! cylinders' nodes and leaves at the load node (or through the ground connections).
+//! The static state: the mean torque through every connection (the engine's cycle-mean
+//! torque enters at the cylinders' nodes and leaves at the load node, or through the
+//! ground connections), the twist it makes, and the elements linearised there.
 
+use super::element::{ElementLaw, rubber_law};
 use super::error::PhysicsError;
 use super::system::System;
-use crate::model::Model;
+use crate::model::{ConnectionKind, Model};
 use nalgebra::{DMatrix, DVector};
 
 /// Mean torque through each element of `system` (in element order), in the connection's
@@ -96,6 +98,72 @@ fn unheld(system: &System, k: &DMatrix<f64>, u: &DMatrix<f64>) -> PhysicsError {
         "the mean torque has no static equilibrium: {which} is held neither by the load \
          nor by ground"
     ))
+}
+
+/// The static state of `system` at `point`: the mean torque through every connection
+/// ([`static_connection_torques`]), the static twist it makes, and each element's law
+/// linearised there — a rubber stage at its tangent stiffness (seed 000 eq. 1–2, 13), a
+/// gear with a softened contact at its tangent ([`super::dead_zone::contact_point`]).
+pub(super) fn static_state(
+    model: &Model,
+    system: &mut System,
+    point: super::system::OperatingPoint,
+) -> Result<(), PhysicsError> {
+    let mean_torques = static_connection_torques(model, system)?;
+    for (e, torque) in system.elements.iter().zip(&mean_torques) {
+        system.mean_torque_nm[e.connection] = Some(*torque);
+    }
+    let mut segments_of = vec![1; model.connections.len()];
+    for d in &system.distributed {
+        segments_of[d.connection] = d.segments();
+    }
+    // Each element at its static twist: rubber and softened gear contacts at their tangent.
+    for e in &mut system.elements {
+        let c = &model.connections[e.connection];
+        let torque = system.mean_torque_nm[e.connection].unwrap_or(0.0);
+        let r2 = e.torque_ratio * e.torque_ratio;
+        match &c.kind {
+            ConnectionKind::Rubber(stage) => {
+                let temperature = point.temperature_c.unwrap_or(stage.temperature_c);
+                let (law, twist) = rubber_law(
+                    stage,
+                    &c.name,
+                    torque,
+                    temperature,
+                    r2,
+                    &mut system.warnings,
+                )?;
+                e.law = law;
+                system.static_twist_rad[e.connection] = Some(twist);
+            }
+            ConnectionKind::Gear(g) if g.backlash_deg > 0.0 => {
+                // A softened contact works at the twist its mean torque needs, with
+                // its tangent there (`dead_zone`); a hard one at the mesh stiffness.
+                let (k, _) = e.stiffness_at(0.0);
+                let point = super::dead_zone::contact_point(
+                    torque / (k / r2),
+                    0.5 * g.backlash_deg.to_radians(),
+                    g.backlash_softening_deg.to_radians(),
+                );
+                let (twist, share) = point.unwrap_or((torque / (k / r2), 1.0));
+                if let ElementLaw::Linear {
+                    stiffness_nm_per_rad,
+                    ..
+                } = &mut e.law
+                {
+                    *stiffness_nm_per_rad *= share;
+                }
+                system.static_twist_rad[e.connection] = Some(twist);
+            }
+            _ => {
+                // A distributed shaft's segments each carry the torque: n × one's twist.
+                let (k, _) = e.stiffness_at(0.0);
+                let segments = segments_of[e.connection] as f64;
+                system.static_twist_rad[e.connection] = Some(segments * torque / (k / r2));
+            }
+        }
+    }
+    Ok(())
 }
 
 #[cfg(test)]

@@ -8,10 +8,10 @@
 //! `k_m·r_to²` between them.
 
 use super::distributed::{Assembly, DistributedShaft, expand};
-use super::element::{Element, ElementLaw, rubber_law};
+use super::element::{Element, ElementLaw};
 use super::error::PhysicsError;
 use super::excitation::{CylinderSpectrum, cylinder_spectrum};
-use super::static_twist::static_connection_torques;
+use super::static_twist::static_state;
 use super::topology::{free_components, merge_rigid_gears};
 use crate::model::{ConnectionKind, GROUND, Model, graph};
 use crate::rubber::MaxwellChain;
@@ -284,41 +284,7 @@ impl System {
             distributed,
         };
 
-        let mean_torques = static_connection_torques(model, &system)?;
-        for (e, torque) in system.elements.iter().zip(&mean_torques) {
-            system.mean_torque_nm[e.connection] = Some(*torque);
-        }
-        let mut segments_of = vec![1; model.connections.len()];
-        for d in &system.distributed {
-            segments_of[d.connection] = d.segments();
-        }
-        // Rubber stages: tangent stiffness at the static twist (seed 000 eq. 1–2, 13).
-        for e in &mut system.elements {
-            let c = &model.connections[e.connection];
-            let torque = system.mean_torque_nm[e.connection].unwrap_or(0.0);
-            let r2 = e.torque_ratio * e.torque_ratio;
-            match &c.kind {
-                ConnectionKind::Rubber(stage) => {
-                    let temperature = point.temperature_c.unwrap_or(stage.temperature_c);
-                    let (law, twist) = rubber_law(
-                        stage,
-                        &c.name,
-                        torque,
-                        temperature,
-                        r2,
-                        &mut system.warnings,
-                    )?;
-                    e.law = law;
-                    system.static_twist_rad[e.connection] = Some(twist);
-                }
-                _ => {
-                    // A distributed shaft's segments each carry the torque: n × one's twist.
-                    let (k, _) = e.stiffness_at(0.0);
-                    let segments = segments_of[e.connection] as f64;
-                    system.static_twist_rad[e.connection] = Some(segments * torque / (k / r2));
-                }
-            }
-        }
+        static_state(model, &mut system, point)?;
         system.apply_modal_damping(model);
         Ok(system)
     }

@@ -8,6 +8,7 @@ use super::crank_angle::{small_sin_cos, wrap};
 use super::plant::{Plant, PlantElement, PlantLaw, RubberPlant, Temperature};
 use super::speed::SpeedProfile;
 use crate::model::AmplitudeForm;
+use crate::physics::dead_zone::dead_zone;
 use std::f64::consts::TAU;
 
 /// What one element does at one state: referred torque and dissipated power.
@@ -52,15 +53,9 @@ impl Plant {
             PlantLaw::Backlash {
                 stiffness_own,
                 half_gap_rad,
+                softening_rad,
             } => {
-                let d = Self::own_relative(e, y);
-                let contact = if d > *half_gap_rad {
-                    d - half_gap_rad
-                } else if d < -half_gap_rad {
-                    d + half_gap_rad
-                } else {
-                    0.0
-                };
+                let contact = dead_zone(Self::own_relative(e, y), *half_gap_rad, *softening_rad);
                 ElementState {
                     torque_ref_nm: stiffness_own * contact * e.ratio,
                     power_w: 0.0,

@@ -78,12 +78,15 @@ pub enum PlantLaw {
     },
     /// A rubber stage.
     Rubber(Box<RubberPlant>),
-    /// A gear mesh with backlash: `T = k·dz(δ)` with free play ±half gap (own, `to` side).
+    /// A gear mesh with backlash: `T = k·s(δ)` with free play ±half gap (own, `to` side),
+    /// `s` the dead zone, hard or softened ([`crate::model::Gear::backlash_softening_deg`]).
     Backlash {
         /// Mesh stiffness, own shaft (`to` side), N·m/rad.
         stiffness_own: f64,
         /// Half the free play, rad at the `to` side.
         half_gap_rad: f64,
+        /// Width ε of the contact's softening, rad at the `to` side (0: hard contact).
+        softening_rad: f64,
     },
 }
 
@@ -300,6 +303,7 @@ impl Plant {
                         PlantLaw::Backlash {
                             stiffness_own: k,
                             half_gap_rad: 0.5 * b.to_radians(),
+                            softening_rad: g.backlash_softening_deg.to_radians(),
                         },
                     ),
                 },

@@ -29,6 +29,7 @@ pub fn gear(from: &str, to: &str, ratio: f64, mesh: Option<f64>) -> Connection {
             ratio,
             mesh_stiffness_nm_per_rad: mesh,
             backlash_deg: 0.0,
+            backlash_softening_deg: 0.0,
         }),
     }
 }

@@ -150,6 +150,8 @@ fn connection_kind() -> impl Strategy<Value = ConnectionKind> {
                 ratio: if reverse { -ratio } else { ratio },
                 mesh_stiffness_nm_per_rad: mesh,
                 backlash_deg: backlash.unwrap_or(0.0),
+                // a softened contact over a fifth of the half play, to cover its key
+                backlash_softening_deg: backlash.map_or(0.0, |b| 0.1 * b),
             })
         });
     prop_oneof![shaft, rubber().prop_map(ConnectionKind::Rubber), gear]

@@ -169,13 +169,18 @@ pub fn describe(model: &Model, sel: Selection, stations: &[String]) -> String {
                     )
                 }
                 ConnectionKind::Gear(g) => format!(
-                    "ratio {} (speed of {} / speed of {})\nmesh {}\nbacklash {}°",
+                    "ratio {} (speed of {} / speed of {})\nmesh {}\nbacklash {}°{}",
                     num(g.ratio),
                     c.to,
                     c.from,
                     g.mesh_stiffness_nm_per_rad
                         .map_or("rigid".to_string(), |k| format!("{} N·m/rad", num(k))),
-                    num(g.backlash_deg)
+                    num(g.backlash_deg),
+                    if g.backlash_softening_deg > 0.0 {
+                        format!(", contact softened over {}°", num(g.backlash_softening_deg))
+                    } else {
+                        String::new()
+                    }
                 ),
             };
             format!("{head}\n{body}")

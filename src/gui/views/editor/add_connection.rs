@@ -109,6 +109,7 @@ pub fn add_ui(ui: &mut Ui, cx: &mut EditCtx, model: &mut Model) {
                     ratio: 1.0,
                     mesh_stiffness_nm_per_rad: None,
                     backlash_deg: 0.0,
+                    backlash_softening_deg: 0.0,
                 }),
             };
             model.connections.push(Connection {

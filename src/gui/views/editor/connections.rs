@@ -1,5 +1,5 @@
 //! Connections of every kind: name, ends, and the kind's values (shaft: see
-//! [`crate::gui::views::editor::shaft`]; rubber: see [`crate::gui::views::editor::rubber`]; gear: ratio, mesh stiffness, backlash); add a
+//! [`crate::gui::views::editor::shaft`]; rubber: see [`crate::gui::views::editor::rubber`]; gear: ratio, mesh stiffness, backlash and its contact softening); add a
 //! connection of a chosen kind between two chosen nodes; remove.
 
 use super::{element_frame, rubber, shaft};
@@ -168,6 +168,20 @@ fn gear_ui(ui: &mut Ui, cx: &mut EditCtx, key: &str, name: &str, g: &mut Gear) {
         &mut g.backlash_deg,
         "°",
         0.1,
+    );
+    end_row(ui, cx);
+    ui.label("contact softening").on_hover_text(
+        "width ε over which the tooth contact stiffens after the play closes \
+         (0: a hard contact)",
+    );
+    widgets::number(
+        ui,
+        cx,
+        &k("backlash_softening_deg"),
+        &format!("contact softening {name}"),
+        &mut g.backlash_softening_deg,
+        "°",
+        0.01,
     );
     end_row(ui, cx);
 }
