@@ -174,6 +174,7 @@ pub fn cases() -> Vec<(Model, Breaker)> {
         Box::new(|m| gear(m, 0).ratio = 0.0),
         Box::new(|m| gear(m, 0).mesh_stiffness_nm_per_rad = Some(-1.0)),
         Box::new(|m| gear(m, 0).backlash_deg = -1.0),
+        Box::new(|m| gear(m, 0).backlash_softening_deg = -1.0),
         Box::new(|m| m.connections[0].to = GROUND.into()),
         Box::new(|m| {
             // A shaft alongside the 1/3 gear: two speeds for gearbox_out.
