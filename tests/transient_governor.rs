@@ -7,13 +7,9 @@
 //! frequency domain does not have: the crank's order 3 at the 75 Hz resonance came out
 //! 7.5 % below `response`, and 10–16 % above it near the crank's antiresonance on
 //! benchtruth control 2014 (whose recordings agreed with `response`, README issue 15).
-//!
-//! **A known defect, not yet mended (README, issue 15):** the test is ignored until the
-//! governor acts on the rigid-body coordinate, spread by inertia, through a low-pass on
-//! its proportional part. That change, tried in the ninth session, gave 0.002–0.17 %
-//! here and moved `simulate` onto `response` on control 2014 (2.460 against 2.447 rpm,
-//! from 2.710); it waits for the shipped cases to be remade on it and for the run-up's
-//! first bin, which a lightly damped mode then rings into.
+//! It now acts on the rigid-body coordinate, spread by inertia, with its proportional
+//! part on that speed low-passed (`transient::plant::Governor`); on control 2014
+//! `simulate` went from 2.710 to 2.460 rpm against `response`'s 2.447.
 
 use torsim::model::parse_model;
 use torsim::physics::{Excitation, OperatingPoint, System};
@@ -86,7 +82,6 @@ fn both_views(speed_rpm: f64, q: f64) -> Vec<(usize, f64, f64)> {
 /// 2.7 mrad, and the engine's kinematics at the vibrating angle double it into order 6
 /// (0.073 against 0.099 rpm), physics the linear view does not have.
 #[test]
-#[ignore = "known defect: the governor damps the vibration (-7.3 % at the resonance); README, issue 15"]
 fn the_governor_leaves_the_resonance_to_the_load_damping() {
     for (speed_rpm, q) in [(1494.0, 3.0), (1020.0, 3.0), (1020.0, 6.0)] {
         for (node, time, freq) in both_views(speed_rpm, q) {

@@ -155,8 +155,13 @@ fn segmented_run_up_passes_a_light_mode_like_one_run() {
         .fold(0.0_f64, |m, (a, b)| m.max((a - b).abs()));
     assert!(cut < 0.01 * peak, "segmented vs whole: {cut} rpm");
     // The first bin carries no start transient: the truth was settled at its start speed
-    // (converged to 1e-4), and the forward model's first bin (order 2, crank, 3 rpm, 1/24
-    // of the peak) agrees with it within 1.5 % of its own value.
+    // (converged to 1e-4), and the forward model's first bin (order 2, crank, 1.39 rpm)
+    // agrees with it within 4 % of its own value. The bin lies on the flank of the
+    // crank's order-2 antiresonance near 800 rpm (`response`: 2.87 rpm at 752 rpm, 0.37
+    // at 800), where the amplitude falls by ~3.8 % per rpm, so the fitted ramp's offset of
+    // under 1 rpm moves it by that much (measured 2.5 %); a start transient of the 0.7 %
+    // damped mode would be tens of percent. (Before the governor stopped damping the
+    // vibration, that flank was flattened: 3.05 against 3.07 rpm.)
     let first = observed
         .observations
         .iter()
@@ -164,7 +169,7 @@ fn segmented_run_up_passes_a_light_mode_like_one_run() {
         .unwrap();
     let (m, s) = (observed.observations[first].measured_rpm, simulated[first]);
     assert!(
-        (m - s).abs() < 0.015 * m,
+        (m - s).abs() < 0.04 * m,
         "first bin: {m} measured, {s} simulated"
     );
 }

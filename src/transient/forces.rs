@@ -5,7 +5,7 @@
 //! temperatures as further states.
 
 use super::crank_angle::{small_sin_cos, wrap};
-use super::plant::{Plant, PlantElement, PlantLaw, RubberPlant, Temperature};
+use super::plant::{GOVERNOR_FILTER_HZ, Plant, PlantElement, PlantLaw, RubberPlant, Temperature};
 use super::speed::SpeedProfile;
 use crate::model::AmplitudeForm;
 use crate::physics::dead_zone::dead_zone;
@@ -160,9 +160,19 @@ impl Plant {
         }
         if let Some(g) = &self.governor {
             let mean = self.engine.as_ref().map_or(0.0, |e| e.mean_torque_nm);
-            dy[n + g.dof] += -mean + g.dissipation_torque_nm + g.total_inertia_kg_m2 * alpha
-                - g.kp * y[n + g.dof]
-                - g.ki * y[g.dof];
+            dy[n + g.dof] += -mean + g.dissipation_torque_nm + g.total_inertia_kg_m2 * alpha;
+            // The PI loop on the rigid-body coordinate, spread by inertia ([`Governor`]).
+            let (mut rate, mut angle) = (0.0, -g.rigid_angle_ref_rad);
+            for (i, w) in g.inertia_share.iter().enumerate() {
+                rate += w * y[n + i];
+                angle += w * y[i];
+            }
+            let filtered = y[g.filter_state];
+            dy[g.filter_state] = TAU * GOVERNOR_FILTER_HZ * (rate - filtered);
+            let correction = g.kp * filtered + g.ki * angle;
+            for (i, w) in g.inertia_share.iter().enumerate() {
+                dy[n + i] -= w * correction;
+            }
         }
         for i in 0..n {
             dy[n + i] = dy[n + i] / mass[i] - alpha;

@@ -4,8 +4,7 @@
 //! - [`plant`]: the state layout and constants of a run; [`forces`]: the equations of
 //!   motion — crank-angle-dependent engine inertia, secant rubber stiffness with a causal
 //!   Maxwell chain ([`crate::rubber`]) and self-heating, gear backlash (hard or softened contact:
-//!   `dead_zone`), a speed governor at the
-//!   load of a free driveline;
+//!   `dead_zone`), a speed governor on the rigid-body motion of a free driveline;
 //! - [`dopri`]: Dormand–Prince 5(4) with error control and dense output;
 //! - [`run`]: settling cycle by cycle (`settle`), then recording a steady run or a ramp
 //!   ([`speed`]); [`observe`]: the run reported in chunks while it goes;
