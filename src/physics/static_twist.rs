@@ -140,12 +140,13 @@ pub(super) fn static_state(
                 // A softened contact works at the twist its mean torque needs, with
                 // its tangent there (`dead_zone`); a hard one at the mesh stiffness.
                 let (k, _) = e.stiffness_at(0.0);
-                let point = super::dead_zone::contact_point(
-                    torque / (k / r2),
+                let deflection = torque / (k / r2);
+                let contact = super::dead_zone::contact_point(
+                    deflection,
                     0.5 * g.backlash_deg.to_radians(),
                     g.backlash_softening_deg.to_radians(),
                 );
-                let (twist, share) = point.unwrap_or((torque / (k / r2), 1.0));
+                let (twist, share) = contact.unwrap_or((deflection, 1.0));
                 if let ElementLaw::Linear {
                     stiffness_nm_per_rad,
                     ..
