@@ -11,6 +11,7 @@
 //! | `coupling_frequency_dependence` | rubber stage | `scale` of seed 000 eq. 9 | 0.1 |
 //! | `coupling_frequency_dependence` (`form = power_law`) | rubber stage | `exponent` of a causal power law (loss tan(nπ/2)) | 0.05 |
 //! | `coupling_thermal_drift` | rubber stage, with a long run | `capacity_j_per_k` (eq. 10–11) | 300 |
+//! | `coupling_thermal_drift` (`time_constant_s`, [`super::drift::with_time_constant`]) | the same | `capacity_j_per_k`, the conductance the capacity over the long run's time constant | 300 |
 //! | `hysteretic_damping` | spring with a viscous damper | `reference_hz` where ψ matches | 50 |
 //! | `unmodelled_mode` | rubber stage or shaft | `inertia_kg_m2` of a middle flange | ¼ lightest node |
 //! | `unmodelled_mode` (`form = branch`, [`super::branch`]) | every node | `frequency_hz` of a branch | grid over the excited band |
@@ -84,6 +85,13 @@ impl Param {
         }
     }
 
+    /// Whether the effect's absence lies above the start: towards [`Param::absent_at`],
+    /// or, without one, towards infinity (a heat capacity, the only such parameter a
+    /// time-domain search takes; a frequency places something everywhere).
+    pub fn absent_above(&self) -> bool {
+        self.absent_at.is_none_or(|null| null > self.start)
+    }
+
     /// Its bounds for a fit.
     pub fn bounds(&self) -> Bounds {
         Bounds {
@@ -129,6 +137,13 @@ impl Candidate {
     pub fn form(&self) -> Option<&str> {
         if self.param.key == "a1" && super::candidates_amplitude::is_elastic(self) {
             return Some(super::candidates_amplitude::LINEAR_FORM);
+        }
+        if self
+            .fixed
+            .iter()
+            .any(|(k, _)| *k == super::drift::TIME_CONSTANT_KEY)
+        {
+            return Some(super::drift::TIME_CONSTANT_KEY);
         }
         self.fixed
             .iter()
@@ -222,7 +237,7 @@ pub fn candidates(model: &Model, stations: &[String], long_run: bool) -> Vec<Can
                 if long_run {
                     out.push(add(
                         Effect::CouplingThermalDrift,
-                        param("capacity_j_per_k", 300.0, 10.0, 1.0e5, true),
+                        param("capacity_j_per_k", 300.0, 1.0, 1.0e5, true),
                     ));
                 }
                 out.push(add(
@@ -252,7 +267,7 @@ pub fn candidates(model: &Model, stations: &[String], long_run: bool) -> Vec<Can
                     out.push(Candidate {
                         effect: Effect::GearBacklash,
                         fixed: at(),
-                        param: param("backlash_deg", 0.05, 0.002, 2.0, true),
+                        param: param("backlash_deg", 0.05, 0.002, 2.0, true).absent_at(0.0),
                         artifact_gains: None,
                     });
                 }

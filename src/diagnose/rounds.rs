@@ -20,6 +20,10 @@ const ROUND_GAIN: f64 = 0.005;
 /// round for one point (on the reference thermal campaign 6.0 → 4.7 s, same capacity).
 const SEARCH_GRID: usize = 4;
 const SEARCH_HALVINGS: usize = 1;
+/// Steps the grid goes on past its end when the best is there: to a factor 27 beyond it.
+/// Validation cases 1038 and development 2006 (thermal drift) ended at the grid's lowest
+/// heat capacity, 33 J/K, where the truths hold 5.7 J/K and less.
+const SEARCH_EXTENSIONS: usize = 3;
 
 /// Where a fit ended, and the steps it rejected on the way (why each could not be run).
 #[derive(Debug, Clone)]
@@ -82,7 +86,8 @@ impl Context<'_> {
     /// result is scored on those runs only, as a screening. The search is a bracketing
     /// one, not a gradient one: an effect like backlash makes the simulated amplitudes a
     /// rough function of its parameter, where finite differences mislead. A grid a factor
-    /// 3 apart ([`SEARCH_GRID`] points), then the bracket around the best halved (in
+    /// 3 apart ([`SEARCH_GRID`] points, extended past an end where the best is, up to
+    /// [`SEARCH_EXTENSIONS`] steps), then the bracket around the best halved (in
     /// `ln x`) [`SEARCH_HALVINGS`] times, then the parabola through the last three points.
     /// A value that cannot be simulated is a rejected step (listed in the result); when
     /// none can be, the candidate is rejected with a [`DiagnoseError::Simulation`].
@@ -148,6 +153,35 @@ impl Context<'_> {
             kept.as_ref()
                 .map_or((centre, f64::INFINITY), |k| (k.0, k.1))
         };
+        // A best at an end of the grid is no bracket: the grid goes on a step at a time
+        // in that direction, up to [`SEARCH_EXTENSIONS`] steps or the bound, but only
+        // away from the effect's absence. Towards it the plain factors held at `at`
+        // decide: they took part of the effect already (validation case 1005, thermal
+        // drift: the grid went on to 72 900 J/K, where the stage hardly warms, and the
+        // verification's refit of the plain factors could no longer bring it back; from
+        // the grid's end at 2700 J/K it named the drift right).
+        // Measured on thermal drift only so far: the other effects searched so (backlash,
+        // the elastic amplitude law) keep their grid until validated with it.
+        let absent_above = p.absent_above();
+        let extensions = if c.effect == Effect::CouplingThermalDrift {
+            SEARCH_EXTENSIONS
+        } else {
+            0
+        };
+        let (mut low_end, mut high_end) = (grid[0], grid[SEARCH_GRID - 1]);
+        for _ in 0..extensions {
+            let (b, _) = best_of(&kept);
+            let next = if b <= low_end && low_end > lo && absent_above {
+                low_end -= step;
+                low_end
+            } else if b >= high_end && high_end < hi && !absent_above {
+                high_end += step;
+                high_end
+            } else {
+                break;
+            };
+            stage(&[next], &mut kept, &mut tried);
+        }
         let mut h = step;
         for _ in 0..SEARCH_HALVINGS {
             h /= 2.0;

@@ -97,6 +97,11 @@ pub fn diagnose(
         .iter()
         .any(|r| matches!(r.regime, RunShape::LongRun { .. }));
     let mut list = candidates(model, &stations, long_run);
+    // A warming stage's drift in a second form: the shape the long runs show, its
+    // conductance the capacity over their time constant ([`super::drift`]).
+    if let Some(tau_s) = super::drift::long_run_time_constant(&cx.observed) {
+        list.extend(super::drift::with_time_constant(&list, tau_s));
+    }
     // The branch form of `unmodelled_mode`: a local mode hanging on any node.
     if let Some(band) = super::branch::excited_band_hz(&cx.observed) {
         list.extend(super::branch::branch_candidates(model, band));

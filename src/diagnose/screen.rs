@@ -237,10 +237,10 @@ pub fn verify(
     let mut chosen: Vec<usize> = Vec::new();
     for i in order {
         let s = &screened[i];
-        if score(&s.evaluated) >= (1.0 - SCREEN_MARGIN) * plain_score {
-            break;
-        }
         let c = &s.candidate;
+        if score(&s.evaluated) >= (1.0 - SCREEN_MARGIN) * plain_score && !verified_anyway(c) {
+            continue;
+        }
         let chosen_effect = |k: &usize| screened[*k].candidate.effect == c.effect;
         if chosen
             .iter()
@@ -295,6 +295,18 @@ pub fn verify(
         }
     }
     Ok(())
+}
+
+/// A plausible thermal drift is verified whatever its screening scored. It was screened
+/// on the long runs and run-ups alone (the only runs where a rubber warms), with the
+/// plain parameters held at the plain fit, which had already taken the drift's mean
+/// into the stage's stiffness, so its score on every fitted run is no fair gate; it is
+/// plausible only where a long run drifts ([`DRIFT_CHI2`]), which no other candidate
+/// explains. On development case 2039 (a 70 s heat time constant, 24 s long run) it
+/// predicted the held-out runs at χ²/N 5.7 against the plain fit's 24.2, yet its fitted
+/// 5.7 against 4.6 kept it from verification.
+fn verified_anyway(c: &Candidate) -> bool {
+    c.effect == Effect::CouplingThermalDrift
 }
 
 /// The time-domain rounds of one screened candidate `s` ([`verify`]).

@@ -204,8 +204,11 @@ fn shifted_law(seed: [f64; 3], t0_c: f64) -> Poly {
 /// `coupling_thermal_drift`: the stage warms by its own loss into a lumped heat capacity
 /// (`capacity_j_per_k`, default 300 J/K: about 0.17 kg of loaded rubber) and cools to
 /// `ambient_c` (default its start temperature) through `conductance_w_per_k` (default
-/// 1.5 W/K; time constant 200 s). A stage without temperature laws gets seed 000 eq.
-/// 10–11 by [`shifted_law`]: −1.33 %/K in stiffness and −0.88 %/K in damping at the start.
+/// 1.5 W/K; time constant 200 s), or with the conductance that gives `time_constant_s`
+/// (capacity over conductance, s; the diagnosis reads it off a long run's drift,
+/// [`crate::diagnose`]'s thermal candidate). A stage without temperature laws gets seed
+/// 000 eq. 10–11 by [`shifted_law`]: −1.33 %/K in stiffness and −0.88 %/K in damping at
+/// the start.
 pub(crate) fn thermal(model: &mut Model, spec: &EffectSpec) -> Result<Applied, EffectError> {
     let mut p = Params::new(
         spec,
@@ -213,12 +216,24 @@ pub(crate) fn thermal(model: &mut Model, spec: &EffectSpec) -> Result<Applied, E
             "connection",
             "capacity_j_per_k",
             "conductance_w_per_k",
+            "time_constant_s",
             "ambient_c",
         ],
     )?;
     let j = stage_index(model, &mut p)?;
     let capacity = p.number("capacity_j_per_k", 300.0, 1.0, 1.0e7)?;
-    let conductance = p.number("conductance_w_per_k", 1.5, 1.0e-3, 1.0e5)?;
+    let conductance = match p.optional_number("time_constant_s", 1e-2, 1e7)? {
+        Some(tau_s) => {
+            if spec.params.contains_key("conductance_w_per_k") {
+                return Err(p.bad(
+                    "time_constant_s",
+                    "give the conductance or the time constant, not both",
+                ));
+            }
+            capacity / tau_s
+        }
+        None => p.number("conductance_w_per_k", 1.5, 1.0e-3, 1.0e5)?,
+    };
     let t0 = stage_mut(model, j)?.temperature_c;
     let ambient = p.number("ambient_c", t0, -40.0, 200.0)?;
     let stage = stage_mut(model, j)?;
@@ -272,5 +287,38 @@ mod tests {
         let seed = |t: f64| (a2 * t + a1) * t + a0;
         assert!((law.eval(70.0) - seed(50.0) / seed(40.0)).abs() < 1e-12);
         assert_eq!(law.range, Some([45.0, 75.0]));
+    }
+
+    /// A time constant gives the conductance as capacity over it (600 J/K over 40 s:
+    /// 15 W/K); given beside a conductance it is refused, naming the key.
+    #[test]
+    fn a_time_constant_sets_the_conductance() {
+        use crate::effects::{Effect, EffectSpec, build_truth};
+        use crate::model::{parse_model, presets};
+        let text = presets::preset("diagnosis-bench").expect("shipped").text;
+        let user = parse_model(text, "bench.toml").unwrap();
+        let spec = EffectSpec::new(Effect::CouplingThermalDrift)
+            .with("capacity_j_per_k", 600.0)
+            .with("time_constant_s", 40.0);
+        let truth = build_truth(&user, &spec, 0.0, 0).unwrap();
+        let thermal = truth
+            .model
+            .connections
+            .iter()
+            .find_map(|c| match &c.kind {
+                crate::model::ConnectionKind::Rubber(r) => r.thermal.clone(),
+                _ => None,
+            })
+            .expect("a warming stage");
+        assert_eq!(thermal.capacity_j_per_k, 600.0);
+        assert_eq!(thermal.conductance_w_per_k, 15.0);
+        assert!(
+            truth.effect.summary.contains("time constant 40 s"),
+            "{}",
+            truth.effect.summary
+        );
+        let both = spec.with("conductance_w_per_k", 2.0);
+        let message = build_truth(&user, &both, 0.0, 0).unwrap_err().to_string();
+        assert!(message.contains("time_constant_s"), "{message}");
     }
 }
