@@ -132,6 +132,9 @@ pub struct Worker {
     pub results: Receiver<SimResult>,
     latest: Arc<AtomicU64>,
     cancelled: Arc<AtomicU64>,
+    /// Read by the window's tests only ([`Self::finished`]).
+    #[cfg_attr(not(test), allow(dead_code))]
+    finished: Arc<AtomicU64>,
     handle: Option<JoinHandle<()>>,
 }
 
@@ -142,18 +145,32 @@ impl Worker {
         let (outbox, results) = unbounded::<SimResult>();
         let latest = Arc::new(AtomicU64::new(0));
         let cancelled = Arc::new(AtomicU64::new(0));
-        let (newest, cancel) = (latest.clone(), cancelled.clone());
+        let finished = Arc::new(AtomicU64::new(0));
+        let flags = Flags {
+            latest: latest.clone(),
+            cancelled: cancelled.clone(),
+            finished: finished.clone(),
+        };
         let handle = std::thread::Builder::new()
             .name("torsim-sim".into())
-            .spawn(move || worker_loop(&inbox, &outbox, &newest, &cancel, &wake))
+            .spawn(move || worker_loop(&inbox, &outbox, &flags, &wake))
             .ok();
         Self {
             requests,
             results,
             latest,
             cancelled,
+            finished,
             handle,
         }
+    }
+
+    /// The generation of the last request the thread is done with: every result of it
+    /// sent and the window woken after each (0: none yet). The window's tests wait for it
+    /// before they call a frame idle.
+    #[cfg(test)]
+    pub fn finished(&self) -> u64 {
+        self.finished.load(Ordering::SeqCst)
     }
 
     /// Asks for results of `model`; older requests become stale at once.
@@ -191,82 +208,107 @@ impl Drop for Worker {
     }
 }
 
+/// What the window and the thread share besides the channels.
+struct Flags {
+    /// The newest request's generation; older ones are stale.
+    latest: Arc<AtomicU64>,
+    /// The generation whose time run was cancelled.
+    cancelled: Arc<AtomicU64>,
+    /// The last generation answered in full ([`Worker::finished`]).
+    finished: Arc<AtomicU64>,
+}
+
 fn worker_loop(
     inbox: &Receiver<SimRequest>,
     outbox: &Sender<SimResult>,
-    latest: &AtomicU64,
-    cancelled: &AtomicU64,
+    flags: &Flags,
     wake: &dyn Fn(),
 ) {
     let mut recordings = RecordingCache::default();
-    while let Ok(mut request) = inbox.recv() {
-        // Only the newest request matters.
-        loop {
-            match inbox.try_recv() {
-                Ok(newer) => request = newer,
-                Err(TryRecvError::Empty) => break,
-                Err(TryRecvError::Disconnected) => return,
-            }
+    while let Ok(request) = inbox.recv() {
+        match answer(request, inbox, outbox, flags, wake, &mut recordings) {
+            Some(generation) => flags.finished.store(generation, Ordering::SeqCst),
+            None => return,
         }
-        let SimRequest::Run {
-            generation,
-            model,
-            trace,
-            recording,
-            stations,
-        } = request
-        else {
-            return;
-        };
-        let stale = || {
-            latest.load(Ordering::SeqCst) != generation
-                || cancelled.load(Ordering::SeqCst) == generation
-        };
-        let send = |r: SimResult| {
-            let _ = outbox.send(r);
-            wake();
-        };
-        let Some(system) = compute(generation, &model, &stale, &send) else {
-            continue;
-        };
-        let view = match &recording {
-            None => None,
-            Some(path) => match recordings.load(path, &model, &system) {
-                Ok(view) => {
-                    send(SimResult::new(generation, Payload::Recording(view.clone())));
-                    Some(view)
-                }
-                Err(e) => {
-                    send(SimResult::new(
-                        generation,
-                        Payload::Error(PanelError {
-                            panel: "recording",
-                            message: e,
-                        }),
-                    ));
-                    None
-                }
-            },
-        };
-        if stale() {
-            send(SimResult::new(generation, Payload::Cancelled));
-            continue;
-        }
-        let stations = match &view {
-            Some(v) => v.stations(),
-            None => stations,
-        };
-        trace_job::run(
-            generation,
-            &model,
-            &system,
-            &trace,
-            view.as_deref(),
-            &stations,
-            &stale,
-            &send,
-        );
     }
+}
+
+/// Answers the newest of the waiting requests; its generation, or `None` on quit.
+fn answer(
+    mut request: SimRequest,
+    inbox: &Receiver<SimRequest>,
+    outbox: &Sender<SimResult>,
+    flags: &Flags,
+    wake: &dyn Fn(),
+    recordings: &mut RecordingCache,
+) -> Option<u64> {
+    // Only the newest request matters.
+    loop {
+        match inbox.try_recv() {
+            Ok(newer) => request = newer,
+            Err(TryRecvError::Empty) => break,
+            Err(TryRecvError::Disconnected) => return None,
+        }
+    }
+    let SimRequest::Run {
+        generation,
+        model,
+        trace,
+        recording,
+        stations,
+    } = request
+    else {
+        return None;
+    };
+    let stale = || {
+        flags.latest.load(Ordering::SeqCst) != generation
+            || flags.cancelled.load(Ordering::SeqCst) == generation
+    };
+    let send = |r: SimResult| {
+        let _ = outbox.send(r);
+        wake();
+    };
+    let Some(system) = compute(generation, &model, &stale, &send) else {
+        return Some(generation);
+    };
+    let view = match &recording {
+        None => None,
+        Some(path) => match recordings.load(path, &model, &system) {
+            Ok(view) => {
+                send(SimResult::new(generation, Payload::Recording(view.clone())));
+                Some(view)
+            }
+            Err(e) => {
+                send(SimResult::new(
+                    generation,
+                    Payload::Error(PanelError {
+                        panel: "recording",
+                        message: e,
+                    }),
+                ));
+                None
+            }
+        },
+    };
+    if stale() {
+        send(SimResult::new(generation, Payload::Cancelled));
+        return Some(generation);
+    }
+    let stations = match &view {
+        Some(v) => v.stations(),
+        None => stations,
+    };
+    trace_job::run(
+        generation,
+        &model,
+        &system,
+        &trace,
+        view.as_deref(),
+        &stations,
+        &stale,
+        &send,
+    );
+    Some(generation)
 }
 
 /// Computes one request's cheap results (modes, Campbell, forced response) and returns

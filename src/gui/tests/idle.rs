@@ -16,10 +16,12 @@ fn harness() -> Harness<'static, TorsimApp> {
 }
 
 /// Every result of the worker is in: modes, response, the finished time run and its
-/// order analysis.
+/// order analysis, and the thread is done with the request, so that no wake-up of it is
+/// still on its way (CI saw one land after six frames on a busy machine).
 fn all_in(a: &TorsimApp) -> bool {
     let r = &a.results;
-    r.campbell.is_some()
+    a.worker.finished() == r.generation
+        && r.campbell.is_some()
         && r.response.is_some()
         && r.trace.is_some()
         && r.trace_analysis.is_some()
