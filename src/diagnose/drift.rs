@@ -7,6 +7,7 @@
 //! `z` are standard normal, and their mean square is 1 ± √(2/n).
 
 use super::candidates::Candidate;
+use super::fit::parabola_vertex_offset;
 use super::observe::{Observed, RunShape};
 use crate::effects::Effect;
 use std::collections::BTreeMap;
@@ -92,10 +93,7 @@ pub fn long_run_time_constant(observed: &Observed) -> Option<f64> {
     let mut log_tau = lo + step * best as f64;
     if best > 0 && best + 1 < grid.len() {
         let (a, b, c) = (grid[best - 1], grid[best], grid[best + 1]);
-        let curvature = a - 2.0 * b + c;
-        if curvature > 0.0 {
-            log_tau += 0.5 * step * (a - c) / curvature;
-        }
+        log_tau += parabola_vertex_offset(a, b, c, step).unwrap_or(0.0);
     }
     log_tau.exp().is_finite().then(|| log_tau.exp())
 }

@@ -42,6 +42,14 @@ fn to_external(u: f64, b: &Bounds) -> f64 {
 /// A residual function: `None` where the model cannot be evaluated.
 pub type Residuals<'a> = &'a (dyn Fn(&[f64]) -> Option<Vec<f64>> + Sync);
 
+/// The offset from the middle of three equally spaced points, `step` apart, to the vertex
+/// of the parabola through their values `before`, `middle` and `after`; `None` when the
+/// parabola has no minimum (curvature ≤ 0 or not finite). In units of the abscissa.
+pub fn parabola_vertex_offset(before: f64, middle: f64, after: f64, step: f64) -> Option<f64> {
+    let curvature = before - 2.0 * middle + after;
+    (curvature > 0.0 && curvature.is_finite()).then(|| 0.5 * step * (before - after) / curvature)
+}
+
 /// Minimizes `Σ r(x)²` from `start` within `bounds` in at most `max_iterations`
 /// Levenberg–Marquardt steps, stopping when a step gains less than `tolerance` of the
 /// cost. `residuals` returns `None` where the model cannot be evaluated (the step is then
@@ -244,5 +252,18 @@ mod tests {
         })
         .unwrap();
         assert!((fit.x[0] - 1.1).abs() < 1e-6, "{:?}", fit.x);
+    }
+
+    /// The vertex of a parabola sampled at three points is exact, and a maximum or a
+    /// straight line has none.
+    #[test]
+    fn finds_a_parabolas_vertex() {
+        let f = |x: f64| 2.0 * (x - 0.37).powi(2) + 5.0;
+        let (x0, h) = (0.5, 0.25);
+        let offset = parabola_vertex_offset(f(x0 - h), f(x0), f(x0 + h), h).unwrap();
+        assert!((x0 + offset - 0.37).abs() < 1e-12, "{offset}");
+        assert_eq!(parabola_vertex_offset(1.0, 2.0, 1.0, h), None);
+        assert_eq!(parabola_vertex_offset(1.0, 2.0, 3.0, h), None);
+        assert_eq!(parabola_vertex_offset(f64::INFINITY, 2.0, 3.0, h), None);
     }
 }

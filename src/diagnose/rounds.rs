@@ -5,7 +5,7 @@
 use super::DiagnoseError;
 use super::candidates::Candidate;
 use super::context::{Context, Evaluated};
-use super::fit::{levenberg_marquardt, parallel_map};
+use super::fit::{levenberg_marquardt, parabola_vertex_offset, parallel_map};
 use super::sensor;
 use super::surrogate::{ratios, scaled};
 use super::trial;
@@ -197,15 +197,10 @@ impl Context<'_> {
                 .find(|t| (t.0 - u.clamp(lo, hi)).abs() < 1e-12 * h.max(1.0))
                 .copied()
         };
-        if let (Some(a), Some(b)) = (near(best.0 - h), near(best.0 + h)) {
-            let curvature = a.1 + b.1 - 2.0 * best.1;
-            if curvature > 0.0 && curvature.is_finite() {
-                stage(
-                    &[best.0 + 0.5 * h * (a.1 - b.1) / curvature],
-                    &mut kept,
-                    &mut tried,
-                );
-            }
+        if let (Some(a), Some(b)) = (near(best.0 - h), near(best.0 + h))
+            && let Some(offset) = parabola_vertex_offset(a.1, best.1, b.1, h)
+        {
+            stage(&[best.0 + offset], &mut kept, &mut tried);
         }
         let failed = failed.into_inner().unwrap_or_default();
         let Some((u, _, simulated)) = kept else {
