@@ -4,10 +4,10 @@
 //! edit is invalid or still computing.
 
 use crate::gui::app::TorsimApp;
+use crate::gui::session::messages::RunAnalysis;
+use crate::gui::session::messages::{Modal, PanelError, Payload, SimResult};
 use crate::gui::session::recording_job::RecordingView;
 use crate::gui::session::trace_data::LiveTrace;
-use crate::gui::session::trace_job::RunAnalysis;
-use crate::gui::session::worker::{Modal, PanelError, Payload, SimResult};
 use crate::gui::trace_state;
 use std::sync::Arc;
 use torsim::response::Response;
@@ -26,7 +26,7 @@ pub struct Results {
     /// Forced response.
     pub response: Option<Arc<Response>>,
     /// The coupling ratings on that response, and the linear range.
-    pub ratings: Option<Arc<crate::gui::session::worker::RatingsResult>>,
+    pub ratings: Option<Arc<crate::gui::session::messages::RatingsResult>>,
     /// The engine's working cycle at full load.
     pub engine_cycle: Option<Arc<torsim::physics::engine_cycle::EngineCycle>>,
     /// The finished time run.

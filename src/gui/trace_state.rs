@@ -5,8 +5,8 @@
 
 use crate::gui::app::TorsimApp;
 use crate::gui::background::Pending;
+use crate::gui::session::messages::Payload;
 use crate::gui::session::trace_data::{LiveTrace, TraceSpec};
-use crate::gui::session::worker::Payload;
 use std::path::PathBuf;
 use torsim::model::Model;
 use torsim::recording::Run;

@@ -5,11 +5,11 @@
 //! (`torsim::signal`: orders per station, STFT images of a run-up). It stops as soon as
 //! the request is stale or cancelled.
 
+use crate::gui::session::messages::{PanelError, Payload, RunAnalysis, SimResult};
 use crate::gui::session::recording_job::{RecordingView, analysis_options, max_frequency_hz};
 use crate::gui::session::spectrogram::SpectrogramSet;
 use crate::gui::session::trace_data::{TraceChunk, TraceSpec};
 use crate::gui::session::trace_series::SeriesBuilder;
-use crate::gui::session::worker::{PanelError, Payload, SimResult};
 use std::sync::Arc;
 use std::time::{Duration, Instant};
 use torsim::model::Model;
@@ -20,18 +20,6 @@ use torsim::transient::{Event, RunOptions, TransientError, simulate_observed, to
 
 /// Longest wait between two chunks sent to the window.
 pub const SEND_EVERY: Duration = Duration::from_millis(200);
-
-/// The analysis of a finished run.
-#[derive(Debug)]
-pub struct RunAnalysis {
-    /// Orders, RMS, IR per station (and per rubber stage's relative speed).
-    pub analysis: Analysis,
-    /// Spectrograms of a run-up.
-    pub spectrograms: Option<Arc<SpectrogramSet>>,
-    /// Shift of a steady recording's time axis that puts its reference station's
-    /// averaged cycle in phase with the simulation's, s (0 without one).
-    pub overlay_shift_s: f64,
-}
 
 /// For a person: `"run-up 1000 to 2000 rpm in 60 s"`.
 pub fn describe(kind: Run) -> String {

@@ -4,7 +4,7 @@
 
 use crate::gui::app::TorsimApp;
 use crate::gui::command::Command;
-use crate::gui::session::worker::Modal;
+use crate::gui::session::messages::Modal;
 use crate::gui::views::plots::modes::{main_element, mode_text, shape_plot};
 use crate::gui::views::plots::series::{Series, grid_125, hover_label};
 use egui::{Color32, Ui};

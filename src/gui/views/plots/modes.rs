@@ -175,7 +175,7 @@ pub fn shape_plot(
 /// The mode shapes on screen, for export: one column per mode over the driveline.
 pub fn plot_data(app: &TorsimApp) -> Option<PlotData> {
     let c = app.results.campbell.as_ref()?;
-    let crate::gui::session::worker::Modal {
+    let crate::gui::session::messages::Modal {
         system,
         campbell: diagram,
         ..
@@ -252,7 +252,7 @@ pub fn modes_ui(app: &mut TorsimApp, ui: &mut Ui) {
         ui.label("computing modes…");
         return;
     };
-    let crate::gui::session::worker::Modal {
+    let crate::gui::session::messages::Modal {
         system,
         campbell: diagram,
         damped,
