@@ -91,6 +91,8 @@ mod tests_prior;
 mod tests_rejected;
 #[cfg(test)]
 mod tests_sensor_gain;
+#[cfg(test)]
+mod tests_verify;
 pub mod trial;
 pub mod words;
 

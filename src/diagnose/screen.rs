@@ -312,7 +312,7 @@ pub fn verify(
 ///   it screened at fitted χ²/N 603 against the plain fit's 388, so it was never run on
 ///   the whole campaign. Verified, it fits the fitted runs at 559 and the held-out runs
 ///   at 1.5e3 against the plain fit's 8.8e3, and is named right.
-fn verified_anyway(s: &Screened) -> bool {
+pub(super) fn verified_anyway(s: &Screened) -> bool {
     let c = &s.candidate;
     c.effect == Effect::CouplingThermalDrift
         || (super::candidates_amplitude::is_elastic(c) && !c.param.is_absent(s.evaluated.value))
