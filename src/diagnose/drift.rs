@@ -60,7 +60,10 @@ const TAU_GRID_SPAN: f64 = 50.0;
 /// eqs. 10–11 with the heat balance of [`crate::effects`]' thermal drift), so the thermal
 /// candidate takes its conductance from it and fits only the capacity: the drift's shape
 /// from the data, its size from the fit. `None` without a long run of at least four
-/// blocks per amplitude.
+/// blocks per amplitude, and `None` when the best τ is the grid's shortest, a quarter of
+/// the run: amplitudes that settle so fast are a transient, and a thermal form built on
+/// it named a drift on a benchtruth control where nothing warms (published seed 100375,
+/// τ = 6.6 s at the grid's bottom).
 pub fn long_run_time_constant(observed: &Observed) -> Option<f64> {
     let groups = long_run_blocks(observed);
     let groups: Vec<&Blocks> = groups.values().filter(|v| v.len() >= 4).collect();
@@ -90,12 +93,18 @@ pub fn long_run_time_constant(observed: &Observed) -> Option<f64> {
         .map(|i| chi2((lo + step * i as f64).exp()))
         .collect();
     let best = (0..grid.len()).min_by(|&a, &b| grid[a].total_cmp(&grid[b]))?;
+    // At the grid's bottom the amplitudes settle within the run's first blocks: a
+    // transient after a speed or load step, not a stage warming through the run.
+    if best == 0 {
+        return None;
+    }
     let mut log_tau = lo + step * best as f64;
-    if best > 0 && best + 1 < grid.len() {
+    if best + 1 < grid.len() {
         let (a, b, c) = (grid[best - 1], grid[best], grid[best + 1]);
         log_tau += parabola_vertex_offset(a, b, c, step).unwrap_or(0.0);
     }
-    log_tau.exp().is_finite().then(|| log_tau.exp())
+    let tau_s = log_tau.exp();
+    tau_s.is_finite().then_some(tau_s)
 }
 
 /// The key a thermal candidate of the second form fixes, and its form's name.
@@ -245,5 +254,20 @@ mod tests {
         assert!((noisy / 30.0 - 1.0).abs() < 0.1, "{noisy}");
         let straight = long_run_time_constant(&long_run(0.05)).expect("a long run");
         assert!(straight > 10.0 * 17.5, "{straight}");
+    }
+
+    /// Amplitudes that settle within the first block, 5 + 3·e^{−t/1 s} (a speed step's
+    /// transient, 1 s against a 17.5 s span of block centres), fit best at the grid's
+    /// bottom, a quarter of the run, and are no warming stage: no time constant. The
+    /// same settling at τ = 8 s, past the bottom (4.4 s), is still read, within 10 %.
+    #[test]
+    fn a_transient_that_settles_at_once_has_no_time_constant() {
+        let settling = |tau_s: f64| move |t: f64, _: f64| 5.0 + 3.0 * (-t / tau_s).exp();
+        assert_eq!(
+            long_run_time_constant(&long_run_of(settling(1.0), 0.0)),
+            None
+        );
+        let slower = long_run_time_constant(&long_run_of(settling(8.0), 0.0)).expect("a τ");
+        assert!((slower / 8.0 - 1.0).abs() < 0.1, "{slower}");
     }
 }
