@@ -10,7 +10,7 @@
 //! [`super::branch::BRANCH_MARGIN`]), a branch inside the excited band
 //! ([`super::branch::inside`]), a sensor artifact's locality ([`super::sensor_local`]) and
 //! the held-out guard ([`super::guard`]), and an effect fitted to its own absence
-//! ([`super::candidates::Param::is_absent`]). The margin is checked before the band and the
+//! ([`super::param::Param::is_absent`]). The margin is checked before the band and the
 //! locality: a candidate that gains nothing is named for that, not for where it settled.
 
 use super::branch;

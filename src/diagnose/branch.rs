@@ -12,9 +12,10 @@
 //! other forms ([`super::screen`]), and only the best place is verified in the time
 //! domain.
 
-use super::candidates::{Candidate, Param};
+use super::candidates::Candidate;
 use super::fit::Bounds;
 use super::observe::Observed;
+use super::param::Param;
 use crate::effects::Effect;
 use crate::model::Model;
 
@@ -58,13 +59,8 @@ pub fn branch_candidates(model: &Model, band_hz: [f64; 2]) -> Vec<Candidate> {
                 ("inertia_ratio", ratio.to_string()),
             ],
             param: Param {
-                key: "frequency_hz",
-                start: (lo * hi).sqrt(),
-                lo,
-                hi,
-                log: true,
                 resonance: true,
-                absent_at: None,
+                ..Param::new("frequency_hz", (lo * hi).sqrt(), lo, hi, true)
             },
             artifact_gains: None,
         })
@@ -118,7 +114,7 @@ pub fn inside(c: &Candidate, value: Option<f64>) -> bool {
 }
 
 /// How far one surrogate fit may move a resonance it starts from (a factor, either way):
-/// two [`super::candidates::RESONANCE_START_STEP`]s, 26 %. The surrogate is the linear
+/// two [`super::param::RESONANCE_START_STEP`]s, 26 %. The surrogate is the linear
 /// model plus the time domain's correction at the starting point, and that correction
 /// holds only near it: it carries the resonance's run-up passage where the resonance
 /// was. Moved further, the surrogate is wrong, and a fit jumped along it. Validation case

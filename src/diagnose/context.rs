@@ -309,12 +309,12 @@ impl Context<'_> {
 /// factor √3 apart up to 9 times either way (log), or at eighths of the range (linear).
 /// The surrogate makes them cheap, and a local mode's valley is narrow: on the reference
 /// `unmodelled_mode` campaign a factor 3 between starts stepped over it.
-/// A [`super::candidates::Param::resonance`] instead tries every value
-/// [`super::candidates::RESONANCE_START_STEP`] apart from its lower to its upper bound.
-fn start_grid(p: &super::candidates::Param) -> Vec<f64> {
+/// A [`super::param::Param::resonance`] instead tries every value
+/// [`super::param::RESONANCE_START_STEP`] apart from its lower to its upper bound.
+fn start_grid(p: &super::param::Param) -> Vec<f64> {
     let mut out = vec![p.start];
     if p.resonance && p.lo > 0.0 && p.hi > p.lo {
-        let step = super::candidates::RESONANCE_START_STEP;
+        let step = super::param::RESONANCE_START_STEP;
         let n = ((p.hi / p.lo).ln() / step.ln()).floor().min(200.0) as i32;
         out.extend((0..=n).map(|k| p.lo * step.powi(k)));
         return out;

@@ -9,7 +9,7 @@
 //!   [`super::trial`]) when its score beats the plain-parameter fit's by [`EFFECT_MARGIN`]
 //!   (relative) — new physics must earn its place on data the fit did not see — and its
 //!   held-out χ²/N improves on the user's model's ([`guard::improves`]), unless it was
-//!   fitted to its own absence ([`super::candidates::Param::is_absent`]);
+//!   fitted to its own absence ([`super::param::Param::is_absent`]);
 //! - otherwise `parameter_error`, naming the plain parameter the fit moved most, when the
 //!   recalibration improves on the user's model's held-out χ²/N the same way;
 //! - otherwise `none` (issue 14: a verdict never has a held-out fit worse than the user's
@@ -161,7 +161,7 @@ pub fn report(
     };
     // A sensor artifact whose mismatch the other stations see too is set aside as well
     // ([`super::sensor_local`]).
-    // So is an effect fitted to its own absence ([`super::candidates::Param::is_absent`]).
+    // So is an effect fitted to its own absence ([`super::param::Param::is_absent`]).
     let best_index = candidates.iter().position(|c| {
         (!super::branch::is_branch(c.candidate) || clears_own_margin(c))
             && !c.candidate.param.is_absent(c.evaluated.value)

@@ -18,9 +18,11 @@
 //! - [`fit`]: Levenberg–Marquardt on the effect's parameter together with the scale
 //!   factors of the plain parameters it could be confused with (all of them).
 //! - [`screen`]: every candidate fitted cheaply (surrogate, or the time domain of only the
-//!   recordings that show it; an effect whose signature is absent is not fitted), the
-//!   best three by the fitted data verified in the time domain ([`rounds`]). Thermal
-//!   drift needs a drifting long run ([`drift`]).
+//!   recordings that show it; an effect whose signature is absent is not fitted). Thermal
+//!   drift needs a drifting long run ([`drift`]). Each parameter declares how its search
+//!   and verification treat it ([`param`]).
+//! - [`verify`]: the best three by the fitted data, and those their parameter declares,
+//!   verified in the time domain of the whole campaign ([`rounds`]).
 //! - [`multistart`]: the plain fit started from the user's values and a small
 //!   deterministic design, so that it escapes a local minimum.
 //! - [`restart`]: every candidate the linear model sees also fitted from the user's
@@ -53,6 +55,7 @@ pub mod multistart;
 pub mod observe;
 pub mod observe_runup;
 pub mod parallel;
+pub mod param;
 pub mod places;
 pub mod power;
 pub mod power_add;
@@ -94,6 +97,7 @@ mod tests_sensor_gain;
 #[cfg(test)]
 mod tests_verify;
 pub mod trial;
+pub mod verify;
 pub mod words;
 
 pub use html::report_html;

@@ -129,21 +129,13 @@ pub fn as_parameter(c: &Candidate, size: &EffectSize, s: f64) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::diagnose::candidates::Param;
+    use crate::diagnose::param::Param;
 
     fn candidate(effect: Effect, start: f64, lo: f64, hi: f64) -> Candidate {
         Candidate {
             effect,
             fixed: Vec::new(),
-            param: Param {
-                key: "x",
-                start,
-                lo,
-                hi,
-                log: false,
-                resonance: false,
-                absent_at: None,
-            },
+            param: Param::new("x", start, lo, hi, false),
             artifact_gains: None,
         }
     }

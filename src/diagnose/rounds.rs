@@ -161,9 +161,10 @@ impl Context<'_> {
         // verification's refit of the plain factors could no longer bring it back; from
         // the grid's end at 2700 J/K it named the drift right).
         // Measured on thermal drift only so far: the other effects searched so (backlash,
-        // the elastic amplitude law) keep their grid until validated with it.
+        // the elastic amplitude law) keep their grid until validated with it
+        // ([`super::param::Param::search_past_grid`]).
         let absent_above = p.absent_above();
-        let extensions = if c.effect == Effect::CouplingThermalDrift {
+        let extensions = if p.search_past_grid {
             SEARCH_EXTENSIONS
         } else {
             0

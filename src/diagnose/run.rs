@@ -6,7 +6,8 @@ use super::candidates::candidates;
 use super::context::Context;
 use super::observe::{RunShape, observe};
 use super::restart::second_starts;
-use super::screen::{Screened, VERIFY_ROUNDS, screen_one, verify};
+use super::screen::{Screened, screen_one};
+use super::verify::{VERIFY_ROUNDS, verify};
 use super::{
     DiagnoseError, DiagnoseOptions, LabelledRecording, Report, decide, holdout, parallel,
     sensor_gain, sensor_refine,

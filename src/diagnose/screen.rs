@@ -1,9 +1,9 @@
-//! Screening and verification of the candidates: the time domain is the costly part of a
-//! diagnosis, so every candidate is first fitted cheaply — on the linear surrogate with
-//! all plain parameters, or, for effects the linear model cannot represent, in the time
-//! domain of only the runs that show them — and only the few whose screened score beats
-//! the plain fit are run on the whole campaign in the time domain, where they are scored.
-//! Only those can become the verdict.
+//! Screening of the candidates: the time domain is the costly part of a diagnosis, so
+//! every candidate is first fitted cheaply — on the linear surrogate with all plain
+//! parameters, or, for effects the linear model cannot represent, in the time domain of
+//! only the runs that show them. Only the few whose screened score beats the plain fit
+//! are then run on the whole campaign in the time domain ([`super::verify`]), where they
+//! are scored; only those can become the verdict.
 
 use super::DiagnoseError;
 use super::candidates::Candidate;
@@ -13,40 +13,6 @@ use super::observe::RunShape;
 use super::reversal::{REVERSAL_FRACTION, torque_reversal_runs};
 use super::trial;
 use crate::effects::Effect;
-
-/// A screened candidate must lower the plain fit's score on the fitted data by this
-/// fraction to be verified in the time domain. Zero: any gain will do. The linear
-/// model's first step undersells effects that show mostly in a swept resonance of the
-/// run-up (on the shipped hysteretic and frequency-dependence cases it predicts 1–2 %
-/// where the time domain then gains 5–50 %), so the ranking, not the size of the
-/// screened gain, chooses what is verified.
-const SCREEN_MARGIN: f64 = 0.0;
-/// At most this many effects are verified: the best place of each of their forms. Each
-/// form, not only the effect's best, because the linear screening ranks forms of one
-/// effect unreliably: on development seed 80 the power-law form at the wrong coupling
-/// screened first and crowded out seed 000 eq. 9 at the right one, which the time
-/// domain then fits at χ²/N 2.8 against 39.9. An effect the linear model does not see
-/// ([`linear_sees`]: thermal drift, backlash, the elastic amplitude law) was screened in
-/// the time domain already,
-/// so its ranking is no estimate: it is verified when it beats the plain fit, beside
-/// these three and without taking their place. Validation case 1005 (thermal drift,
-/// screened at fitted χ²/N 35.2, held out 17.8) was crowded out by three effects whose
-/// optimistic linear screenings ranked above it and whose verified fits then came out at
-/// 18–40 fitted, 191–230 held out.
-const VERIFIED_EFFECTS: usize = 3;
-
-/// The number of distinct effects in `effects`.
-fn distinct(effects: &[Effect]) -> usize {
-    let mut seen: Vec<Effect> = Vec::new();
-    for e in effects {
-        if !seen.contains(e) {
-            seen.push(*e);
-        }
-    }
-    seen.len()
-}
-/// Time-domain rounds of a verified candidate.
-pub const VERIFY_ROUNDS: usize = 3;
 
 /// A candidate after screening (and, if it got that far, verification).
 #[derive(Debug, Clone)]
@@ -215,137 +181,4 @@ pub fn screen_one(
         rejected: None,
         rejected_steps,
     })
-}
-
-/// Verifies the most promising screened candidates in the time domain: the best place of
-/// each form of each effect, ranked by `score` on the fitted observations (the held-out ones must not
-/// choose what gets verified), while it beats the plain fit's `plain_score` by
-/// [`SCREEN_MARGIN`], of at most [`VERIFIED_EFFECTS`] effects the linear model screened
-/// (and every effect screened in the time domain). `progress` is told each one's name.
-pub fn verify(
-    cx: &Context,
-    plain: &Evaluated,
-    screened: &mut [Screened],
-    plain_score: f64,
-    score: &dyn Fn(&Evaluated) -> f64,
-    progress: &mut dyn FnMut(usize, usize, &str) -> Result<(), DiagnoseError>,
-) -> Result<(), DiagnoseError> {
-    let mut order: Vec<usize> = (0..screened.len())
-        .filter(|i| !screened[*i].verified && screened[*i].rejected.is_none())
-        .collect();
-    order.sort_by(|a, b| score(&screened[*a].evaluated).total_cmp(&score(&screened[*b].evaluated)));
-    let mut chosen: Vec<usize> = Vec::new();
-    for i in order {
-        let s = &screened[i];
-        let c = &s.candidate;
-        if score(&s.evaluated) >= (1.0 - SCREEN_MARGIN) * plain_score && !verified_anyway(s) {
-            continue;
-        }
-        let chosen_effect = |k: &usize| screened[*k].candidate.effect == c.effect;
-        if chosen
-            .iter()
-            .any(|k| chosen_effect(k) && screened[*k].candidate.form() == c.form())
-        {
-            continue;
-        }
-        let estimated = |k: &usize| linear_sees(&screened[*k].candidate);
-        let effects: Vec<Effect> = chosen
-            .iter()
-            .filter(|k| estimated(k))
-            .map(|k| screened[*k].candidate.effect)
-            .collect();
-        if estimated(&i)
-            && !chosen.iter().any(chosen_effect)
-            && distinct(&effects) >= VERIFIED_EFFECTS
-        {
-            continue;
-        }
-        chosen.push(i);
-    }
-    // Each chosen candidate is verified on its own, side by side ([`super::parallel`]).
-    let results = super::parallel::map_reporting(
-        chosen.len(),
-        cx.options.threads,
-        &|k| verify_one(cx, plain, &screened[chosen[k]]),
-        &mut |k, finished| {
-            progress(
-                finished,
-                chosen.len(),
-                &screened[chosen[k]].candidate.name(),
-            )
-        },
-    )?;
-    for (i, result) in chosen.iter().zip(results) {
-        let s = &mut screened[*i];
-        match result {
-            Err(e) if trial::is_fatal(&e) => return Err(e),
-            Err(e) => s.rejected = Some(trial::reason("verification", &e)),
-            // Every round rejected, the first (which adds the effect) too: the effect
-            // was never run on the whole campaign.
-            Ok(stepped) if stepped.best.value.is_none() => {
-                s.rejected = Some(format!("verification: {}", stepped.rejected.join("; ")));
-                s.rejected_steps.extend(stepped.rejected);
-            }
-            Ok(stepped) => {
-                s.evaluated = stepped.best;
-                s.rejected_steps.extend(stepped.rejected);
-                s.verified = true;
-                s.note = format!("{}; verified in the time domain", s.note);
-            }
-        }
-    }
-    Ok(())
-}
-
-/// Candidates verified whatever their screening scored, because the screening held the
-/// plain parameters at the plain fit, which had already taken the effect's mean into a
-/// stiffness, so its score on the fitted runs is no fair gate:
-/// - a plausible thermal drift. It was screened on the long runs and run-ups alone (the
-///   only runs where a rubber warms) and is plausible only where a long run drifts
-///   ([`DRIFT_CHI2`]), which no other candidate explains. On development case 2039 (a
-///   70 s heat time constant, 24 s long run) it predicted the held-out runs at χ²/N 5.7
-///   against the plain fit's 24.2, yet its fitted 5.7 against 4.6 kept it from
-///   verification;
-/// - an elastic amplitude law the screening found present (not at its absence). Screened
-///   on the steady runs with the plain fit's coupling stiffness, which had stiffened to
-///   the mean twist of the fitted regimes. On development case 2059 (a power law, p = 1)
-///   it screened at fitted χ²/N 603 against the plain fit's 388, so it was never run on
-///   the whole campaign. Verified, it fits the fitted runs at 559 and the held-out runs
-///   at 1.5e3 against the plain fit's 8.8e3, and is named right.
-pub(super) fn verified_anyway(s: &Screened) -> bool {
-    let c = &s.candidate;
-    c.effect == Effect::CouplingThermalDrift
-        || (super::candidates_amplitude::is_elastic(c) && !c.param.is_absent(s.evaluated.value))
-}
-
-/// The time-domain rounds of one screened candidate `s` ([`verify`]).
-fn verify_one(
-    cx: &Context,
-    plain: &Evaluated,
-    s: &Screened,
-) -> Result<super::rounds::Stepped, DiagnoseError> {
-    let c = &s.candidate;
-    if s.in_time_domain {
-        Ok(cx.rounds(s.evaluated.clone(), Some(c), VERIFY_ROUNDS - 1, None))
-    } else if linear_sees(c) {
-        Ok(cx.rounds(
-            plain.clone(),
-            Some(c),
-            VERIFY_ROUNDS,
-            Some(s.evaluated.clone()),
-        ))
-    } else {
-        // The effect's value from the screening, on the whole campaign, then the
-        // plain parameters refitted with it in place.
-        let e = &s.evaluated;
-        trial::evaluate(
-            cx,
-            Some(c),
-            e.model.clone(),
-            e.joint.clone(),
-            e.factors.clone(),
-            e.value,
-        )
-        .map(|e| cx.rounds(e, Some(c), VERIFY_ROUNDS - 1, None))
-    }
 }

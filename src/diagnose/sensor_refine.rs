@@ -7,13 +7,14 @@
 //! at a geared station: the plain fit's held-out χ²/N is 75 against the user's model's
 //! 42). So the artifact that fits best is also fitted from the user's values, and each of
 //! the two starts gets the rounds of surrogate fit and time-domain run a verified effect
-//! gets ([`super::screen::verify`]), which move the plain parameters and the artifact's
+//! gets ([`super::verify::verify`]), which move the plain parameters and the artifact's
 //! size together; the candidate keeps whichever scores best on the fitted data.
 
 use super::DiagnoseError;
 use super::context::{Context, Evaluated};
-use super::screen::{Screened, VERIFY_ROUNDS};
+use super::screen::Screened;
 use super::trial;
+use super::verify::VERIFY_ROUNDS;
 use crate::effects::Effect;
 
 /// Refits the best screened sensor artifact of `screened` (by `score` on the fitted data,

@@ -1,14 +1,15 @@
 //! Which screened candidates are verified in the time domain whatever their screening
-//! scored ([`super::screen::verified_anyway`]).
+//! scored ([`super::verify::verified_anyway`]).
 
 use super::candidates::{Candidate, candidates};
 use super::candidates_amplitude::is_elastic;
 use super::context::Evaluated;
-use super::screen::{Screened, verified_anyway};
+use super::screen::Screened;
+use super::verify::verified_anyway;
 use crate::effects::Effect;
 use crate::model::{parse_model, presets};
 
-/// Verified whatever it screened ([`super::screen::verified_anyway`]): an elastic
+/// Verified whatever it screened ([`super::verify::verified_anyway`]): an elastic
 /// amplitude law the screening found present, and a thermal drift; not an elastic law at
 /// its absence, nor a candidate the linear model screens.
 #[test]

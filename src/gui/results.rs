@@ -4,8 +4,9 @@
 //! edit is invalid or still computing.
 
 use crate::gui::app::TorsimApp;
-use crate::gui::session::messages::RunAnalysis;
-use crate::gui::session::messages::{Modal, PanelError, Payload, SimResult};
+use crate::gui::session::messages::{
+    Modal, PanelError, Payload, RatingsResult, RunAnalysis, SimResult,
+};
 use crate::gui::session::recording_job::RecordingView;
 use crate::gui::session::trace_data::LiveTrace;
 use crate::gui::trace_state;
@@ -26,7 +27,7 @@ pub struct Results {
     /// Forced response.
     pub response: Option<Arc<Response>>,
     /// The coupling ratings on that response, and the linear range.
-    pub ratings: Option<Arc<crate::gui::session::messages::RatingsResult>>,
+    pub ratings: Option<Arc<RatingsResult>>,
     /// The engine's working cycle at full load.
     pub engine_cycle: Option<Arc<torsim::physics::engine_cycle::EngineCycle>>,
     /// The finished time run.
