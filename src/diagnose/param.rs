@@ -133,6 +133,22 @@ impl Param {
         self.absent_at.is_none_or(|null| null > self.start)
     }
 
+    /// Whether two fitted values are different places of the effect, not one place
+    /// found twice: further apart than the time-domain search resolves, a factor √3 for
+    /// a parameter fitted in log (one halving of its grid's factor 3), a sixteenth of the
+    /// range for one fitted linearly (one halving of its grid's eighth,
+    /// [`super::rounds`]). `false` when either is missing.
+    pub fn apart(&self, a: Option<f64>, b: Option<f64>) -> bool {
+        let (Some(a), Some(b)) = (a, b) else {
+            return false;
+        };
+        if self.log {
+            a > 0.0 && b > 0.0 && (a / b).ln().abs() > 0.5 * 3f64.ln()
+        } else {
+            (a - b).abs() > (self.hi - self.lo) / 16.0
+        }
+    }
+
     /// Its bounds for a fit.
     pub fn bounds(&self) -> Bounds {
         Bounds {
@@ -140,5 +156,26 @@ impl Param {
             hi: self.hi,
             log: self.log,
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A log parameter's places are apart beyond a factor √3 = 1.732 either way; a linear
+    /// one's beyond a sixteenth of its range; a missing value is never apart.
+    #[test]
+    fn places_are_apart_beyond_the_search_resolution() {
+        let backlash = Param::new("backlash_deg", 0.05, 0.002, 2.0, true);
+        assert!(!backlash.apart(Some(0.1), Some(0.17)));
+        assert!(backlash.apart(Some(0.1), Some(0.18)));
+        assert!(backlash.apart(Some(0.0056), Some(0.179)));
+        assert!(backlash.apart(Some(0.18), Some(0.1)));
+        assert!(!backlash.apart(None, Some(0.179)));
+        let scale = Param::new("pressure_scale", 0.95, 0.3, 1.5, false);
+        // A sixteenth of 1.2 is 0.075.
+        assert!(!scale.apart(Some(0.95), Some(1.02)));
+        assert!(scale.apart(Some(0.95), Some(1.03)));
     }
 }
