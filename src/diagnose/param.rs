@@ -4,6 +4,7 @@
 //! search and the verification run.
 
 use super::fit::Bounds;
+use super::rounds::SEARCH_HALVINGS;
 
 /// A fitted parameter: its key, start, bounds and whether it is fitted in log.
 #[derive(Debug, Clone, PartialEq)]
@@ -133,20 +134,41 @@ impl Param {
         self.absent_at.is_none_or(|null| null > self.start)
     }
 
+    /// The step of its time-domain search's coarse grid, in the search's coordinate
+    /// ([`Param::search_coordinate`]): a factor 3 (ln 3) for a parameter fitted in log, an
+    /// eighth of the range for one fitted linearly ([`super::rounds`]).
+    pub fn search_step(&self) -> f64 {
+        if self.log {
+            3f64.ln()
+        } else {
+            (self.hi - self.lo) / 8.0
+        }
+    }
+
+    /// The coordinate its time-domain search steps in: `ln x` for a parameter fitted in
+    /// log (`None` for a value ≤ 0, which has none), `x` itself otherwise.
+    pub fn search_coordinate(&self, x: f64) -> Option<f64> {
+        match self.log {
+            true if x > 0.0 => Some(x.ln()),
+            true => None,
+            false => Some(x),
+        }
+    }
+
     /// Whether two fitted values are different places of the effect, not one place
-    /// found twice: further apart than the time-domain search resolves, a factor √3 for
-    /// a parameter fitted in log (one halving of its grid's factor 3), a sixteenth of the
-    /// range for one fitted linearly (one halving of its grid's eighth,
-    /// [`super::rounds`]). `false` when either is missing.
+    /// found twice: further apart than the time-domain search resolves, its grid step
+    /// ([`Param::search_step`]) halved [`SEARCH_HALVINGS`] times; a factor √3 for a
+    /// parameter fitted in log, a sixteenth of the range for one fitted linearly.
+    /// `false` when either is missing.
     pub fn apart(&self, a: Option<f64>, b: Option<f64>) -> bool {
         let (Some(a), Some(b)) = (a, b) else {
             return false;
         };
-        if self.log {
-            a > 0.0 && b > 0.0 && (a / b).ln().abs() > 0.5 * 3f64.ln()
-        } else {
-            (a - b).abs() > (self.hi - self.lo) / 16.0
-        }
+        let (Some(u), Some(v)) = (self.search_coordinate(a), self.search_coordinate(b)) else {
+            return false;
+        };
+        let resolution = self.search_step() / 2f64.powi(SEARCH_HALVINGS as i32);
+        (u - v).abs() > resolution
     }
 
     /// Its bounds for a fit.

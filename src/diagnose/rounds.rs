@@ -19,7 +19,7 @@ const ROUND_GAIN: f64 = 0.005;
 /// parabola refines). Four points run as two pairs on two threads; five took a third
 /// round for one point (on the reference thermal campaign 6.0 → 4.7 s, same capacity).
 const SEARCH_GRID: usize = 4;
-const SEARCH_HALVINGS: usize = 1;
+pub(super) const SEARCH_HALVINGS: usize = 1;
 /// Steps the grid goes on past its end when the best is there: to a factor 27 beyond it.
 /// Validation cases 1038 and development 2006 (thermal drift) ended at the grid's lowest
 /// heat capacity, 33 J/K, where the truths hold 5.7 J/K and less.
@@ -103,11 +103,7 @@ impl Context<'_> {
         let log = p.log;
         let to_x = |u: f64| if log { u.exp() } else { u };
         let from_x = |x: f64| if log { x.ln() } else { x };
-        let step = if p.log {
-            3f64.ln()
-        } else {
-            (p.hi - p.lo) / 8.0
-        };
+        let step = p.search_step();
         let (lo, hi) = (from_x(p.lo), from_x(p.hi));
         // One value's cost and simulation, or why it could not be simulated.
         let cost_at = |u: f64| -> Result<(f64, f64, Vec<f64>), DiagnoseError> {
