@@ -436,3 +436,30 @@ fn connection_name_defaults_to_from_to() {
     let model = parse_model(BASE, "t").expect("base");
     assert_eq!(model.connections[0].name, "a-b");
 }
+
+/// A gear's mesh damping is ≥ 0 and needs an elastic mesh: a rigid gear has no twist.
+#[test]
+fn gear_mesh_damping_checks() {
+    let gear = |keys: &str| {
+        replaced(
+            BASE,
+            "kind = \"shaft\"\nfrom = \"a\"\nto = \"b\"\nstiffness = 1000.0",
+            &format!("kind = \"gear\"\nfrom = \"a\"\nto = \"b\"\nratio = 2.0\n{keys}"),
+        )
+    };
+    fails(
+        &gear("mesh_damping = 5.0"),
+        "connection[0].mesh_damping",
+        "mesh_damping = 5.0",
+        "needs `mesh_stiffness`",
+    );
+    fails(
+        &gear("mesh_stiffness = 1.0e5\nmesh_damping = -1.0"),
+        "connection[0].mesh_damping",
+        "mesh_damping = -1.0",
+        "must be a finite number ≥ 0, found -1",
+    );
+    let ok = gear("mesh_stiffness = 1.0e5\nmesh_damping = 5.0");
+    let model = parse_model(&ok, "ok.toml").unwrap();
+    assert!(validate(&model).is_ok());
+}

@@ -359,3 +359,57 @@ fn rubber_model_matches_the_frequency_domain_through_its_resonance() {
     }
     eprintln!("worst {:.4} %", 100.0 * worst);
 }
+
+/// A damped gear mesh is one law in both domains: THREE_DOF with its hub–flange shaft
+/// made a 1:2 gear (mesh 2.5e3 N·m/rad and 10 N·m·s/rad at the flange side: 1e4 and 40
+/// referred to the hub), no play. The steady run (Dormand–Prince, where the mesh is the
+/// free-play law at zero play) agrees with the frequency domain within 1 % at every node
+/// and order, as the linear chain does above; and the mesh damping matters there: without
+/// it the frequency domain moves by more than 5 % somewhere, so the check can fail.
+#[test]
+fn a_damped_gear_mesh_matches_the_frequency_domain() {
+    let gear = "kind = \"gear\"\nfrom = \"hub\"\nto = \"flange\"\nratio = 2.0\n\
+                mesh_stiffness = 2.5e3\nmesh_damping = 10.0";
+    let text = THREE_DOF.replacen(
+        "kind = \"shaft\"\nfrom = \"hub\"\nto = \"flange\"\nstiffness = 1.0e4\ndamping = 1.5",
+        gear,
+        1,
+    );
+    assert!(text.contains("mesh_damping"));
+    let model = parse_model(&text, "geared.toml").unwrap();
+    let speed_rpm = 1500.0;
+    let options = RunOptions {
+        rate_hz: 4096.0,
+        method: Method::Explicit,
+        ..RunOptions::default()
+    };
+    let sim = simulate(&model, Run::steady(speed_rpm, 2.0), options, &mut |_| true).unwrap();
+    assert!(sim.settling.converged, "{:?}", sim.settling);
+    let response = |model| {
+        let system = System::new(model, OperatingPoint::default()).unwrap();
+        let excitation = Excitation::new(model, &system, 1.0, &[1.0, 2.5]);
+        forced_response(&system, &excitation, &[speed_rpm]).unwrap()
+    };
+    let r = response(&model);
+    let undamped =
+        response(&parse_model(&text.replace("mesh_damping = 10.0", ""), "u.toml").unwrap());
+    let mut largest_effect: f64 = 0.0;
+    for node in 0..3 {
+        for (q_index, q) in [1.0, 2.5].into_iter().enumerate() {
+            let time = order_amplitude(&sim.speed_rpm[node], options.rate_hz, speed_rpm, q);
+            let freq = r.ias_amplitude_rpm[node][q_index][0];
+            let err = (time - freq).abs() / freq;
+            assert!(
+                err < 0.01,
+                "node {node} order {q}: time {time} vs frequency {freq} ({:.3} %)",
+                100.0 * err
+            );
+            let without = undamped.ias_amplitude_rpm[node][q_index][0];
+            largest_effect = largest_effect.max((without - freq).abs() / freq);
+        }
+    }
+    assert!(
+        largest_effect > 0.05,
+        "mesh damping moves the response by {largest_effect}"
+    );
+}

@@ -198,6 +198,7 @@ fn connection(t: &Tab) -> Result<Connection, ModelError> {
             &[
                 "ratio",
                 "mesh_stiffness",
+                "mesh_damping",
                 "backlash_deg",
                 "backlash_softening_deg",
             ],
@@ -323,6 +324,7 @@ fn gear(t: &Tab) -> Result<ConnectionKind, ModelError> {
     Ok(ConnectionKind::Gear(Gear {
         ratio: t.f64("ratio")?,
         mesh_stiffness_nm_per_rad: t.opt_f64("mesh_stiffness")?,
+        mesh_damping_nm_s_per_rad: t.f64_or("mesh_damping", 0.0)?,
         backlash_deg: t.f64_or("backlash_deg", 0.0)?,
         backlash_softening_deg: t.f64_or("backlash_softening_deg", 0.0)?,
     }))

@@ -212,6 +212,12 @@ pub struct Gear {
     pub ratio: f64,
     /// Mesh stiffness at the `to` side, N·m/rad; `None` is a rigid constraint.
     pub mesh_stiffness_nm_per_rad: Option<f64>,
+    /// Viscous mesh damping at the `to` side, N·m·s/rad (default 0), on the rate of the
+    /// mesh twist. It acts whether or not the teeth are in contact, as in the classical
+    /// gear-pair model of Kahraman & Singh (*J. Sound Vib.* 142(1), 1990, eq. 1: linear
+    /// viscous damping beside the piecewise stiffness), so that without backlash the mesh
+    /// is a spring and dashpot in every view. Needs `mesh_stiffness`.
+    pub mesh_damping_nm_s_per_rad: f64,
     /// Total free play at the `to` side, degrees (default 0).
     pub backlash_deg: f64,
     /// Width ε of the tooth contact's softening, degrees at the `to` side (default 0: a

@@ -202,6 +202,13 @@ fn connections(model: &Model) -> Check {
                 if let Some(mesh) = g.mesh_stiffness_nm_per_rad {
                     positive(&k("mesh_stiffness"), mesh)?;
                 }
+                non_negative(&k("mesh_damping"), g.mesh_damping_nm_s_per_rad)?;
+                if g.mesh_damping_nm_s_per_rad > 0.0 && g.mesh_stiffness_nm_per_rad.is_none() {
+                    fail(
+                        k("mesh_damping"),
+                        "needs `mesh_stiffness`: a rigid gear has no mesh twist to damp",
+                    )?;
+                }
                 non_negative(&k("backlash_deg"), g.backlash_deg)?;
                 non_negative(&k("backlash_softening_deg"), g.backlash_softening_deg)?;
             }

@@ -147,6 +147,7 @@ fn connection(out: &mut String, c: &Connection) {
             if let Some(k) = g.mesh_stiffness_nm_per_rad {
                 kv(out, "mesh_stiffness", num(k));
             }
+            opt_kv(out, "mesh_damping", g.mesh_damping_nm_s_per_rad, 0.0);
             opt_kv(out, "backlash_deg", g.backlash_deg, 0.0);
             opt_kv(out, "backlash_softening_deg", g.backlash_softening_deg, 0.0);
         }

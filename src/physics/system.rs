@@ -244,7 +244,7 @@ impl System {
                             r,
                             ElementLaw::Linear {
                                 stiffness_nm_per_rad: k * r * r,
-                                damping_nm_s_per_rad: 0.0,
+                                damping_nm_s_per_rad: g.mesh_damping_nm_s_per_rad * r * r,
                                 distributed_inertia_kg_m2: 0.0,
                             },
                         )

@@ -52,13 +52,15 @@ impl Plant {
             }
             PlantLaw::Backlash {
                 stiffness_own,
+                damping_own,
                 half_gap_rad,
                 softening_rad,
             } => {
                 let contact = dead_zone(Self::own_relative(e, y), *half_gap_rad, *softening_rad);
+                let rate_own = Self::own_relative(e, &y[n..]);
                 ElementState {
-                    torque_ref_nm: stiffness_own * contact * e.ratio,
-                    power_w: 0.0,
+                    torque_ref_nm: (stiffness_own * contact + damping_own * rate_own) * e.ratio,
+                    power_w: damping_own * rate_own * rate_own,
                 }
             }
             PlantLaw::Rubber(r) => {

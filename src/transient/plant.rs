@@ -83,6 +83,9 @@ pub enum PlantLaw {
     Backlash {
         /// Mesh stiffness, own shaft (`to` side), N·m/rad.
         stiffness_own: f64,
+        /// Mesh damping, own shaft (`to` side), N·m·s/rad, on the twist rate whether or
+        /// not the teeth touch ([`crate::model::Gear::mesh_damping_nm_s_per_rad`]).
+        damping_own: f64,
         /// Half the free play, rad at the `to` side.
         half_gap_rad: f64,
         /// Width ε of the contact's softening, rad at the `to` side (0: hard contact).
@@ -327,6 +330,7 @@ impl Plant {
                         ratio_of(&c.to),
                         PlantLaw::Backlash {
                             stiffness_own: k,
+                            damping_own: g.mesh_damping_nm_s_per_rad,
                             half_gap_rad: 0.5 * b.to_radians(),
                             softening_rad: g.backlash_softening_deg.to_radians(),
                         },

@@ -28,6 +28,7 @@ pub fn gear(from: &str, to: &str, ratio: f64, mesh: Option<f64>) -> Connection {
         kind: ConnectionKind::Gear(Gear {
             ratio,
             mesh_stiffness_nm_per_rad: mesh,
+            mesh_damping_nm_s_per_rad: 0.0,
             backlash_deg: 0.0,
             backlash_softening_deg: 0.0,
         }),

@@ -173,6 +173,9 @@ pub fn cases() -> Vec<(Model, Breaker)> {
         }),
         Box::new(|m| gear(m, 0).ratio = 0.0),
         Box::new(|m| gear(m, 0).mesh_stiffness_nm_per_rad = Some(-1.0)),
+        Box::new(|m| gear(m, 0).mesh_damping_nm_s_per_rad = -1.0),
+        // A rigid gear with mesh damping (only a file can give it one).
+        Box::new(|m| gear(m, 0).mesh_damping_nm_s_per_rad = 5.0),
         Box::new(|m| gear(m, 0).backlash_deg = -1.0),
         Box::new(|m| gear(m, 0).backlash_softening_deg = -1.0),
         Box::new(|m| m.connections[0].to = GROUND.into()),

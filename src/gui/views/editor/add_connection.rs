@@ -108,6 +108,7 @@ pub fn add_ui(ui: &mut Ui, cx: &mut EditCtx, model: &mut Model) {
                 _ => ConnectionKind::Gear(Gear {
                     ratio: 1.0,
                     mesh_stiffness_nm_per_rad: None,
+                    mesh_damping_nm_s_per_rad: 0.0,
                     backlash_deg: 0.0,
                     backlash_softening_deg: 0.0,
                 }),

@@ -144,6 +144,8 @@ fn gear_ui(ui: &mut Ui, cx: &mut EditCtx, key: &str, name: &str, g: &mut Gear) {
         cx.track(&r);
         if r.changed() {
             g.mesh_stiffness_nm_per_rad = (!rigid).then_some(1e6);
+            // A rigid gear has no mesh twist to damp (the model refuses the pair).
+            g.mesh_damping_nm_s_per_rad = 0.0;
         }
         if let Some(m) = &mut g.mesh_stiffness_nm_per_rad {
             widgets::number(
@@ -158,6 +160,21 @@ fn gear_ui(ui: &mut Ui, cx: &mut EditCtx, key: &str, name: &str, g: &mut Gear) {
         }
     });
     end_row(ui, cx);
+    // Shown on a rigid gear too when a file gave it one, so the refusal has its widget.
+    if g.mesh_stiffness_nm_per_rad.is_some() || g.mesh_damping_nm_s_per_rad != 0.0 {
+        ui.label("mesh damping")
+            .on_hover_text("viscous, on the mesh twist rate at the `to` side");
+        widgets::number(
+            ui,
+            cx,
+            &k("mesh_damping"),
+            &format!("mesh damping {name}"),
+            &mut g.mesh_damping_nm_s_per_rad,
+            "N·m·s/rad",
+            10.0,
+        );
+        end_row(ui, cx);
+    }
     ui.label("backlash")
         .on_hover_text("total free play at the `to` side");
     widgets::number(
