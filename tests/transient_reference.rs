@@ -11,7 +11,7 @@ use torsim::transient::plant::Plant;
 use torsim::transient::{Method, RunOptions, SpeedProfile, simulate};
 
 mod transient_support;
-use transient_support::order_amplitude;
+use transient_support::{assert_orders_match, order_amplitude};
 
 const THREE_DOF: &str = r#"format = 1
 name = "linear three-DOF"
@@ -70,18 +70,15 @@ fn linear_run_matches_frequency_domain() {
     let system = System::new(&model, OperatingPoint::default()).unwrap();
     let excitation = Excitation::new(&model, &system, 1.0, &[1.0, 2.5]);
     let r = forced_response(&system, &excitation, &[speed_rpm]).unwrap();
-    for node in 0..3 {
-        for (q_index, q) in [1.0, 2.5].into_iter().enumerate() {
-            let time = order_amplitude(&sim.speed_rpm[node], options.rate_hz, speed_rpm, q);
-            let freq = r.ias_amplitude_rpm[node][q_index][0];
-            let err = (time - freq).abs() / freq;
-            assert!(
-                err < 0.01,
-                "node {node} order {q}: time {time} vs frequency {freq} ({:.3} %)",
-                100.0 * err
-            );
-        }
-    }
+    let orders = [1.0, 2.5];
+    assert_orders_match(
+        &sim.speed_rpm,
+        options.rate_hz,
+        speed_rpm,
+        &r.ias_amplitude_rpm,
+        &orders,
+        0.01,
+    );
 }
 
 /// The implicit integrator (ROS2), forced on the linear model, agrees with the frequency
@@ -105,16 +102,15 @@ fn implicit_run_matches_frequency_domain() {
     let system = System::new(&model, OperatingPoint::default()).unwrap();
     let excitation = Excitation::new(&model, &system, 1.0, &[1.0, 2.5]);
     let r = forced_response(&system, &excitation, &[speed_rpm]).unwrap();
-    for node in 0..3 {
-        for (q_index, q) in [1.0, 2.5].into_iter().enumerate() {
-            let time = order_amplitude(&sim.speed_rpm[node], options.rate_hz, speed_rpm, q);
-            let freq = r.ias_amplitude_rpm[node][q_index][0];
-            assert!(
-                (time - freq).abs() / freq < 0.01,
-                "node {node} order {q}: {time} vs {freq}"
-            );
-        }
-    }
+    let orders = [1.0, 2.5];
+    assert_orders_match(
+        &sim.speed_rpm,
+        options.rate_hz,
+        speed_rpm,
+        &r.ias_amplitude_rpm,
+        &orders,
+        0.01,
+    );
 }
 
 /// An undamped, unforced grounded chain conserves ½Σ Jω² + ½Σ kΔθ² over 200 periods of
@@ -393,21 +389,19 @@ fn a_damped_gear_mesh_matches_the_frequency_domain() {
     let r = response(&model);
     let undamped =
         response(&parse_model(&text.replace("mesh_damping = 10.0", ""), "u.toml").unwrap());
-    let mut largest_effect: f64 = 0.0;
-    for node in 0..3 {
-        for (q_index, q) in [1.0, 2.5].into_iter().enumerate() {
-            let time = order_amplitude(&sim.speed_rpm[node], options.rate_hz, speed_rpm, q);
-            let freq = r.ias_amplitude_rpm[node][q_index][0];
-            let err = (time - freq).abs() / freq;
-            assert!(
-                err < 0.01,
-                "node {node} order {q}: time {time} vs frequency {freq} ({:.3} %)",
-                100.0 * err
-            );
-            let without = undamped.ias_amplitude_rpm[node][q_index][0];
-            largest_effect = largest_effect.max((without - freq).abs() / freq);
-        }
-    }
+    let orders = [1.0, 2.5];
+    assert_orders_match(
+        &sim.speed_rpm,
+        options.rate_hz,
+        speed_rpm,
+        &r.ias_amplitude_rpm,
+        &orders,
+        0.01,
+    );
+    let largest_effect = (r.ias_amplitude_rpm.iter().flatten().flatten())
+        .zip(undamped.ias_amplitude_rpm.iter().flatten().flatten())
+        .map(|(with, without)| (without - with).abs() / with)
+        .fold(0.0, f64::max);
     assert!(
         largest_effect > 0.05,
         "mesh damping moves the response by {largest_effect}"

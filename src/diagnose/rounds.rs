@@ -102,7 +102,9 @@ impl Context<'_> {
         // The internal coordinate: ln x for a scale-like parameter, else x itself.
         let log = p.log;
         let to_x = |u: f64| if log { u.exp() } else { u };
-        let from_x = |x: f64| if log { x.ln() } else { x };
+        // A log parameter's bounds and start are positive (the candidate's contract); a
+        // non-positive one would sit at the coordinate's −∞, as ln 0 does.
+        let from_x = |x: f64| p.search_coordinate(x).unwrap_or(f64::NEG_INFINITY);
         let step = p.search_step();
         let (lo, hi) = (from_x(p.lo), from_x(p.hi));
         // One value's cost and simulation, or why it could not be simulated.
