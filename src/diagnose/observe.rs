@@ -94,13 +94,15 @@ pub struct Observed {
     pub sample_noise_rpm: Vec<Vec<f64>>,
 }
 
-/// The analysis options of a diagnosis: no relative speeds, orders up to `max_order`.
+/// The analysis options of a diagnosis: no relative speeds, orders up to `max_order`, a
+/// run-up's order tracks without its spectrogram.
 pub fn analysis_options(max_order: f64) -> AnalysisOptions {
     AnalysisOptions {
         samples_per_rev: samples_per_rev(max_order),
         max_order,
         track_max_order: max_order,
         pairs: Some(Vec::new()),
+        spectrogram: false,
         ..AnalysisOptions::default()
     }
 }

@@ -7,7 +7,7 @@ use std::collections::BTreeMap;
 
 use super::orders::{self, OrderAmplitude, OrderSpectrum};
 use super::resample::{self, AngleGrid, Interpolation};
-use super::stft::{self, Frames, Stft};
+use super::stft::{self, Frames};
 use super::{SignalError, stats};
 use crate::recording::{Recording, RunKind};
 
@@ -35,6 +35,11 @@ pub struct AnalysisOptions {
     /// Station pairs `(a, b)` whose relative speed `n_a − n_b` is reported; `None`: every
     /// pair (a bench usually has two or three stations).
     pub pairs: Option<Vec<(String, String)>>,
+    /// Whether a run-up's STFT magnitudes are computed (default `true`); without them
+    /// [`StationStft::magnitude_rpm`] is empty and only the order tracks are made (the
+    /// diagnosis reads the tracks alone: the magnitudes were an eighth of its analyses'
+    /// time on benchtruth seed 2010, `perf`).
+    pub spectrogram: bool,
 }
 
 impl Default for AnalysisOptions {
@@ -49,6 +54,7 @@ impl Default for AnalysisOptions {
             interpolation: Interpolation::BandLimited,
             shaft_ratio: BTreeMap::new(),
             pairs: None,
+            spectrogram: true,
         }
     }
 }
@@ -79,7 +85,8 @@ pub struct StationAnalysis {
 /// A signal's STFT in a run-up.
 #[derive(Debug, Clone, PartialEq)]
 pub struct StationStft {
-    /// Magnitude per window and frequency line, rpm zero-to-peak.
+    /// Magnitude per window and frequency line, rpm zero-to-peak; empty when
+    /// [`AnalysisOptions::spectrogram`] is off.
     pub magnitude_rpm: Vec<Vec<f64>>,
     /// Per order of [`RunUpStft::orders`], the amplitude in each window, rpm.
     pub order_tracks_rpm: Vec<Vec<f64>>,
@@ -280,8 +287,10 @@ impl Context<'_> {
                     .zip(self.grid.sample_cycles())
                     .map(|(v, x)| v - orders::trend_at(&means, x))
                     .collect();
-                let Stft { magnitude, .. } =
-                    stft::stft(&values, self.grid.t0_s, self.grid.dt_s, frames)?;
+                let magnitude = match self.options.spectrogram {
+                    true => stft::stft(&values, self.grid.t0_s, self.grid.dt_s, frames)?.magnitude,
+                    false => Vec::new(),
+                };
                 let order_tracks_rpm =
                     stft::order_tracks(&values, self.grid.dt_s, frames, speeds, track_orders);
                 Some(StationStft {
