@@ -3,10 +3,19 @@
 use std::f64::consts::TAU;
 use torsim::model::parse_model;
 use torsim::physics::{Excitation, OperatingPoint, System};
-use torsim::response::forced_response;
+use torsim::response::{Response, forced_response};
 
 fn rel(a: f64, b: f64) -> f64 {
     (a - b).abs() / b.abs()
+}
+
+/// Order 1's forced response of the model in `text` (order 1 only, full load) at
+/// `speeds_rpm`: the geared models and their hand-referred twins below.
+fn order_one_response(text: &str, speeds_rpm: &[f64]) -> Response {
+    let model = parse_model(text, "m.toml").unwrap();
+    let system = System::new(&model, OperatingPoint::default()).unwrap();
+    let excitation = Excitation::new(&model, &system, 1.0, &[1.0]);
+    forced_response(&system, &excitation, speeds_rpm).unwrap()
 }
 
 /// One inertia on a shaft (k, c) to ground under T cos(qθ*): Θ = T/(k − ω²J + iωc).
@@ -178,14 +187,11 @@ phase_deg = 90.0
         4.5e3 * r * r,
         60.0 * r
     );
-    let run = |text: &str| {
-        let model = parse_model(text, "m.toml").unwrap();
-        let system = System::new(&model, OperatingPoint::default()).unwrap();
-        let excitation = Excitation::new(&model, &system, 1.0, &[1.0]);
-        let speeds: Vec<f64> = (1..=100).map(|i| 20.0 * i as f64).collect();
-        forced_response(&system, &excitation, &speeds).unwrap()
-    };
-    let (g, t) = (run(GEARED), run(&twin));
+    let speeds: Vec<f64> = (1..=100).map(|i| 20.0 * i as f64).collect();
+    let (g, t) = (
+        order_one_response(GEARED, &speeds),
+        order_one_response(&twin, &speeds),
+    );
     for s in 0..100 {
         assert!(
             rel(g.ias_amplitude_rpm[0][0][s], t.ias_amplitude_rpm[0][0][s]) < 1e-11,
@@ -341,14 +347,11 @@ fn damped_mesh_equals_referred_shaft() {
         9.0e4 * r * r,
         3.0 * r * r,
     );
-    let run = |text: &str| {
-        let model = parse_model(text, "m.toml").unwrap();
-        let system = System::new(&model, OperatingPoint::default()).unwrap();
-        let excitation = Excitation::new(&model, &system, 1.0, &[1.0]);
-        let speeds: Vec<f64> = (1..=150).map(|i| 40.0 * i as f64).collect();
-        forced_response(&system, &excitation, &speeds).unwrap()
-    };
-    let (g, t) = (run(&geared), run(&twin));
+    let speeds: Vec<f64> = (1..=150).map(|i| 40.0 * i as f64).collect();
+    let (g, t) = (
+        order_one_response(&geared, &speeds),
+        order_one_response(&twin, &speeds),
+    );
     for s in 0..150 {
         let crank = rel(g.ias_amplitude_rpm[0][0][s], t.ias_amplitude_rpm[0][0][s]);
         assert!(crank < 1e-11, "crank at {s}: {crank}");
