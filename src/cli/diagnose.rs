@@ -253,6 +253,15 @@ fn summary(report: &Report, model_name: &str) -> String {
     for line in wrap(&v.explanation, 88) {
         outln!(text, "  {line}");
     }
+    for r in &report.recordings {
+        if let Some(why) = &r.set_aside {
+            outln!(
+                text,
+                "  set aside: `{}`, which the model cannot simulate ({why})",
+                r.label
+            );
+        }
+    }
     let f = &report.fit;
     outln!(
         text,

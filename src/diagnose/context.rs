@@ -68,6 +68,9 @@ pub struct Context<'a> {
     /// Recipes*, §15.1); weighting the prior by `√F` instead gives the same minimum and
     /// keeps χ² in the noise's units.
     pub prior_weight: f64,
+    /// Recordings the user's model cannot simulate, by label, left out of `observed`
+    /// ([`super::unsimulable`]).
+    pub set_aside: Vec<super::unsimulable::SetAside>,
 }
 
 impl<'a> Context<'a> {
@@ -82,6 +85,7 @@ impl<'a> Context<'a> {
             options,
             observed,
             prior_weight: 1.0,
+            set_aside: Vec::new(),
         }
     }
 }

@@ -97,6 +97,7 @@ mod tests_sensor_gain;
 #[cfg(test)]
 mod tests_verify;
 pub mod trial;
+mod unsimulable;
 pub mod verify;
 pub mod words;
 

@@ -231,6 +231,12 @@ pub struct RecordingUse {
     pub speed_rpm: [f64; 2],
     /// Engine load 0..1.
     pub load: f64,
-    /// `"fit"`, `"held out"` or `"fit (first half), held out (second half)"`.
+    /// `"fit"`, `"held out"`, `"fit (first half), held out (second half)"`, `"fit and
+    /// held out (alternate speed bins)"`, or `"set aside"`.
     pub role: String,
+    /// Extension: why a recording was set aside: the message of the user's model's
+    /// simulation there (`"the reference speed is not > 0 at 0.022 s"`). Its amplitudes
+    /// are in no fit, score, map or overlay. Left out of the JSON for a recording used.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub set_aside: Option<String>,
 }

@@ -4,7 +4,7 @@
 
 use super::context::{Context, Evaluated};
 use super::decide::{run_roles, validated_on};
-use super::observe::RunShape;
+use super::observe::{Run, RunShape};
 use super::report::*;
 use crate::physics::{OperatingPoint, System};
 
@@ -60,23 +60,18 @@ pub fn assemble(
     let mut noise: Vec<f64> = obs.observations.iter().map(|o| o.sigma_rpm).collect();
     noise.sort_by(f64::total_cmp);
     let roles = run_roles(cx);
-    let recordings = obs
+    let mut recordings: Vec<RecordingUse> = obs
         .runs
         .iter()
         .zip(roles)
-        .map(|(r, role)| RecordingUse {
-            label: r.label.clone(),
-            kind: r.regime.label().into(),
-            speed_rpm: match r.regime {
-                RunShape::Steady { speed_rpm } | RunShape::LongRun { speed_rpm } => {
-                    [speed_rpm, speed_rpm]
-                }
-                RunShape::Ramp { from_rpm, to_rpm } => [from_rpm, to_rpm],
-            },
-            load: r.load,
-            role,
-        })
+        .map(|(r, role)| recording_use(r, role, None))
+        .chain(
+            cx.set_aside
+                .iter()
+                .map(|s| recording_use(&s.run, "set aside".into(), Some(s.reason.clone()))),
+        )
         .collect();
+    recordings.sort_by(|a, b| a.label.cmp(&b.label));
     Report {
         format: REPORT_FORMAT,
         verdict,
@@ -97,6 +92,23 @@ pub fn assemble(
         noise_rpm: noise.get(noise.len() / 2).copied().unwrap_or(0.0),
         not_fitted,
         elapsed_s,
+    }
+}
+
+/// A recording's entry in the report.
+fn recording_use(r: &Run, role: String, set_aside: Option<String>) -> RecordingUse {
+    RecordingUse {
+        label: r.label.clone(),
+        kind: r.regime.label().into(),
+        speed_rpm: match r.regime {
+            RunShape::Steady { speed_rpm } | RunShape::LongRun { speed_rpm } => {
+                [speed_rpm, speed_rpm]
+            }
+            RunShape::Ramp { from_rpm, to_rpm } => [from_rpm, to_rpm],
+        },
+        load: r.load,
+        role,
+        set_aside,
     }
 }
 

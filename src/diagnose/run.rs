@@ -3,21 +3,21 @@
 //! domain, score on held-out data, decide.
 
 use super::candidates::candidates;
-use super::context::Context;
 use super::observe::{RunShape, observe};
 use super::restart::second_starts;
 use super::screen::{Screened, screen_one};
+use super::unsimulable::context_and_baseline;
 use super::verify::{VERIFY_ROUNDS, verify};
 use super::{
-    DiagnoseError, DiagnoseOptions, LabelledRecording, Report, decide, holdout, parallel,
-    sensor_gain, sensor_refine,
+    DiagnoseError, DiagnoseOptions, LabelledRecording, Report, decide, parallel, sensor_gain,
+    sensor_refine,
 };
 use crate::model::Model;
 
 /// Rounds of linear fit and time-domain correction for the plain parameters.
 const PLAIN_ROUNDS: usize = 3;
 /// Fitted χ²/N of the plain fit above which its prior is reweighed and the fit redone
-/// ([`Context::prior_weight`]); below it the weight would change by less than 22 %.
+/// ([`super::context::Context::prior_weight`]); below it the weight would change by less than 22 %.
 const REWEIGH_FLOOR: f64 = 1.5;
 
 /// Diagnoses `recordings` against `model` (see the module docs of [`super`]).
@@ -56,18 +56,25 @@ pub fn diagnose(
     let mut ordered: Vec<&LabelledRecording> = recordings.iter().collect();
     ordered.sort_by(|a, b| a.label.cmp(&b.label));
     let ordered: Vec<LabelledRecording> = ordered.into_iter().cloned().collect();
+    // The report names recordings by label, and a recording is set aside by it
+    // ([`super::unsimulable`]); the CLI and the window give repeated labels their file
+    // names ([`super::labels::unique_labels`]).
+    if let Some(w) = ordered.windows(2).find(|w| w[0].label == w[1].label) {
+        return Err(DiagnoseError::Input(format!(
+            "two recordings are labelled `{}`: the report names recordings by label",
+            w[0].label
+        )));
+    }
     let recordings = &ordered[..];
     step(0.0, "analysing the recordings")?;
     let observed = observe(recordings, options.max_order)?;
-    let mut cx = Context::new(model, options, observed);
-    holdout::check_split(&cx.observed, &cx.held_out)?;
     step(0.1, "simulating the model")?;
-    let ones = vec![1.0; cx.plain.len()];
-    // The user's model as given: its failure is the only simulation error (issue 14).
-    let baseline = cx.evaluate(model.clone(), None, ones, None)?;
+    // The user's model as given, on every recording it can simulate; one it cannot is
+    // set aside with its reason ([`super::unsimulable`]).
+    let (mut cx, baseline) = context_and_baseline(model, options, observed)?;
     step(0.2, "fitting the plain parameters")?;
     let mut fitted = cx.plain_fit(&baseline, PLAIN_ROUNDS)?;
-    // The campaign's model floor sets the prior's weight ([`Context::prior_weight`]); the
+    // The campaign's model floor sets the prior's weight ([`super::context::Context::prior_weight`]); the
     // plain fit is redone with it, and every candidate is fitted with it.
     let floor = cx.chi2(&fitted.best, false);
     if floor > REWEIGH_FLOOR {

@@ -30,7 +30,7 @@ pub enum SignalError {
     NonUniform(String),
     /// The reference speed is zero, negative or not finite (its angle cannot define
     /// orders).
-    #[error("the reference speed is not > 0 at {time_s} s")]
+    #[error("the reference speed is not > 0 at {time_s:.6} s")]
     NonPositiveSpeed {
         /// Time of the first such sample, s.
         time_s: f64,

@@ -282,7 +282,10 @@ pub fn recordings(out: &mut String, report: &Report) {
                 td(&r.kind),
                 format!(r#"<td class="num">{}</td>"#, escape(&speed)),
                 format!(r#"<td class="num">{}</td>"#, tenth(100.0 * r.load)),
-                td(&r.role),
+                match &r.set_aside {
+                    Some(why) => td(&format!("{}: {why}", r.role)),
+                    None => td(&r.role),
+                },
             ];
             (String::new(), cells.concat())
         })

@@ -42,6 +42,7 @@ fn recording(label: &str, kind: &str, speed_rpm: [f64; 2], role: &str) -> Record
         speed_rpm,
         load: 1.0,
         role: role.into(),
+        set_aside: None,
     }
 }
 
@@ -313,4 +314,19 @@ fn the_page_is_self_contained_and_complete() {
     ] {
         assert!(page.contains(needle), "missing {needle}");
     }
+}
+
+#[test]
+fn a_recording_set_aside_shows_its_reason_and_keeps_the_numbering() {
+    let mut report = sample();
+    let mut aside = recording("Regime 0", "steady", [1150.0, 1150.0], "set aside");
+    aside.set_aside = Some("the reference speed is not > 0 at 0.021484 s".into());
+    report.recordings.insert(0, aside);
+    let page = report_html(&report, "bench");
+    assert!(
+        page.contains("<td>set aside: the reference speed is not &gt; 0 at 0.021484 s</td>"),
+        "the row gives the reason"
+    );
+    // The map numbers the runs as the table does: the run-up is now the sixth.
+    assert!(map_svg(&page, "engine").contains("Run-up [6]: speed bins"));
 }

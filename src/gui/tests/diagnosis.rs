@@ -131,6 +131,7 @@ pub(super) fn report() -> Report {
             speed_rpm: [3000.0, 3000.0],
             load: 1.0,
             role: "fit".into(),
+            set_aside: None,
         }],
         noise_rpm: 0.02,
         not_fitted: Vec::new(),

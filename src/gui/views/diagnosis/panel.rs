@@ -163,11 +163,15 @@ fn recordings_ui(app: &mut TorsimApp, ui: &mut Ui) {
                         ui.label(r.speed_text());
                         ui.label(format!("{:.0} %", 100.0 * r.load));
                         ui.label(format!("{:.1} s", r.duration_s));
-                        let role = roles
+                        let used = roles
                             .as_ref()
-                            .and_then(|u| u.iter().find(|x| x.label == *label))
-                            .map_or("", |x| x.role.as_str());
-                        ui.label(role);
+                            .and_then(|u| u.iter().find(|x| x.label == *label));
+                        let role = ui.label(used.map_or("", |x| x.role.as_str()));
+                        if let Some(why) = used.and_then(|x| x.set_aside.as_ref()) {
+                            role.on_hover_text(format!(
+                                "The model cannot be simulated at this recording: {why}"
+                            ));
+                        }
                         let file = r
                             .path
                             .file_name()
