@@ -121,13 +121,25 @@ impl Plant {
             // combined by the angle-addition formulas (the vibration angle is small).
             let phase_m = phi_m.rem_euclid(engine.cycle_rad);
             let (s_m, c_m) = phase_m.sin_cos();
+            // sin/cos(φ_m + θ) of the last DOF worked out: an engine's cylinders share
+            // their node, and θ is not always small (a run-up's crank strays from the
+            // measured ramp by up to 3 rad), where each cylinder paid a `sincos` of its own
+            // (14 % of a thermal-drift diagnosis, `perf`).
+            let mut last: Option<(usize, f64, f64)> = None;
             for c in &engine.cylinders {
                 let speed = c.ratio * (big_omega + y[n + c.dof]);
                 let (phase, s1, c1) = if c.ratio == 1.0 {
                     let offset = y[c.dof] - c.firing_rad;
-                    let (s_v, c_v) = small_sin_cos(y[c.dof]);
+                    let (s_a, c_a) = match last {
+                        Some((dof, s_a, c_a)) if dof == c.dof => (s_a, c_a),
+                        _ => {
+                            let (s_v, c_v) = small_sin_cos(y[c.dof]);
+                            let a = (s_m * c_v + c_m * s_v, c_m * c_v - s_m * s_v);
+                            last = Some((c.dof, a.0, a.1));
+                            a
+                        }
+                    };
                     // sin/cos(φ_m + θ − α) with α's sine and cosine precomputed.
-                    let (s_a, c_a) = (s_m * c_v + c_m * s_v, c_m * c_v - s_m * s_v);
                     let (s_f, c_f) = c.firing_sin_cos;
                     (
                         wrap(phase_m + offset, engine.cycle_rad),
