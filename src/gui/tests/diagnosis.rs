@@ -242,6 +242,30 @@ fn none_and_an_edited_model_cannot_be_accepted() {
     h.get_by_label_contains("edited since this diagnosis");
 }
 
+/// A recording the model could not simulate is named under the verdict with its reason,
+/// not only in the recordings table.
+#[test]
+fn a_recording_set_aside_is_said_under_the_verdict() {
+    let mut h = harness(bench());
+    let mut r = report();
+    r.recordings.push(RecordingUse {
+        label: "Regime A2".into(),
+        kind: "steady".into(),
+        speed_rpm: [1150.0, 1150.0],
+        load: 1.0,
+        role: "set aside".into(),
+        set_aside: Some("the reference speed is not > 0 at 0.021484 s".into()),
+    });
+    h.state_mut().diagnosis.show(Finished::new(bench(), r));
+    h.step();
+    h.step();
+    h.get_by_label(
+        "Regime A2 is set aside: the model cannot be simulated there (the reference speed \
+         is not > 0 at 0.021484 s).",
+    );
+    h.get_by_label_contains("2 recordings");
+}
+
 /// "Save report…" writes the page for a person atomically: the verdict is in it and no
 /// temporary file is left; a folder that does not exist is an error naming the file.
 #[test]

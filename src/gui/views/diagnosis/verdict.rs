@@ -56,6 +56,19 @@ pub fn verdict_ui(app: &mut TorsimApp, finished: &Finished, ui: &mut Ui) {
         f.before, f.after
     ))
     .on_hover_text(&f.metric);
+    // A recording the model cannot simulate is in no number above: said here, not only
+    // in the recordings table's role column.
+    for u in &r.recordings {
+        if let Some(why) = &u.set_aside {
+            ui.label(
+                RichText::new(format!(
+                    "{} is set aside: the model cannot be simulated there ({why}).",
+                    u.label
+                ))
+                .color(ui.visuals().warn_fg_color),
+            );
+        }
+    }
     ui.label(
         RichText::new(format!(
             "{} recordings, noise {} rpm (median σ of the order amplitudes), {:.0} s.",
