@@ -253,14 +253,12 @@ fn summary(report: &Report, model_name: &str) -> String {
     for line in wrap(&v.explanation, 88) {
         outln!(text, "  {line}");
     }
-    for r in &report.recordings {
-        if let Some(why) = &r.set_aside {
-            outln!(
-                text,
-                "  set aside: `{}`, which the model cannot simulate ({why})",
-                r.label
-            );
-        }
+    for sentence in report
+        .recordings
+        .iter()
+        .filter_map(|r| r.set_aside_sentence())
+    {
+        outln!(text, "  {sentence}");
     }
     let f = &report.fit;
     outln!(

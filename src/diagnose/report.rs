@@ -240,3 +240,17 @@ pub struct RecordingUse {
     #[serde(skip_serializing_if = "Option::is_none")]
     pub set_aside: Option<String>,
 }
+
+impl RecordingUse {
+    /// For a recording set aside, the sentence that says so, as the CLI's summary and the
+    /// window's verdict put it: `"Regime A is set aside: the model cannot be simulated
+    /// there (…)."`.
+    pub fn set_aside_sentence(&self) -> Option<String> {
+        self.set_aside.as_ref().map(|why| {
+            format!(
+                "{} is set aside: the model cannot be simulated there ({why}).",
+                self.label
+            )
+        })
+    }
+}

@@ -72,16 +72,17 @@ pub fn context_and_baseline<'a>(
     let mut set_aside: Vec<SetAside> = Vec::new();
     loop {
         let mut cx = Context::new(model, options, observed);
-        cx.set_aside = set_aside.clone();
         holdout::check_split(&cx.observed, &cx.held_out)
             .map_err(|e| with_reasons(e, &set_aside))?;
         let ones = vec![1.0; cx.plain.len()];
-        let label = match cx.evaluate(model.clone(), None, ones, None) {
-            Ok(baseline) => return Ok((cx, baseline)),
+        let (label, message) = match cx.evaluate(model.clone(), None, ones, None) {
+            Ok(baseline) => {
+                cx.set_aside = set_aside;
+                return Ok((cx, baseline));
+            }
             Err(DiagnoseError::Simulation { label, message }) => (label, message),
             Err(e) => return Err(e),
         };
-        let (label, message) = label;
         let Some(r) = cx.observed.runs.iter().position(|run| run.label == label) else {
             return Err(DiagnoseError::Simulation { label, message });
         };

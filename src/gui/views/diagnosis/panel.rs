@@ -167,10 +167,8 @@ fn recordings_ui(app: &mut TorsimApp, ui: &mut Ui) {
                             .as_ref()
                             .and_then(|u| u.iter().find(|x| x.label == *label));
                         let role = ui.label(used.map_or("", |x| x.role.as_str()));
-                        if let Some(why) = used.and_then(|x| x.set_aside.as_ref()) {
-                            role.on_hover_text(format!(
-                                "The model cannot be simulated at this recording: {why}"
-                            ));
+                        if let Some(sentence) = used.and_then(|x| x.set_aside_sentence()) {
+                            role.on_hover_text(sentence);
                         }
                         let file = r
                             .path

@@ -58,16 +58,8 @@ pub fn verdict_ui(app: &mut TorsimApp, finished: &Finished, ui: &mut Ui) {
     .on_hover_text(&f.metric);
     // A recording the model cannot simulate is in no number above: said here, not only
     // in the recordings table's role column.
-    for u in &r.recordings {
-        if let Some(why) = &u.set_aside {
-            ui.label(
-                RichText::new(format!(
-                    "{} is set aside: the model cannot be simulated there ({why}).",
-                    u.label
-                ))
-                .color(ui.visuals().warn_fg_color),
-            );
-        }
+    for sentence in r.recordings.iter().filter_map(|u| u.set_aside_sentence()) {
+        ui.label(RichText::new(sentence).color(ui.visuals().warn_fg_color));
     }
     ui.label(
         RichText::new(format!(
