@@ -189,10 +189,17 @@ fn write_recording(
     // The first time at which the truth is no longer finite: a bench never writes NaN
     // (a diverged truth is the bench's failure, reported as such, not torsim's).
     let mut diverged_s: Option<f64> = None;
+    // The first time the crank turns backwards: an engine stalls there, so a truth that
+    // does it is no bench (seed 100585's run-up reached −56 rpm at the crank).
+    let mut reversed_s: Option<f64> = None;
+    let crank = case.truth.engine.node;
     let mut meter = Meter::for_case(case);
     sim::run(&case.truth, &plant, c.rate_hz, |t, y| {
         if let Some(m) = meter.as_mut() {
             m.add(&y[..n_nodes]);
+        }
+        if y[n_nodes + crank] <= 0.0 && reversed_s.is_none() {
+            reversed_s = Some(t);
         }
         let _ = write!(csv, "{:.6}", c.clock_start_s + t);
         for (k, s) in c.stations.iter().enumerate() {
@@ -211,6 +218,13 @@ fn write_recording(
             "seed {}: the bench's truth diverged in `{}` at {t:.4} s ({} form): the case is not usable \
              and counts as a bench error",
             case.seed, rec.stem, case.form
+        )));
+    }
+    if let Some(t) = reversed_s {
+        return Err(WriteError::Draw(format!(
+            "seed {}: the crank turns backwards in `{}` at {t:.4} s: an engine would stall \
+             there, so the case is not usable and counts as a bench error",
+            case.seed, rec.stem
         )));
     }
     let csv_path = dir.join(format!("{}.csv", rec.stem));

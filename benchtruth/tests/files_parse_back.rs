@@ -97,3 +97,23 @@ fn check_case(seed: u64, class: Option<&str>) {
 fn a_none_control_parses_back_and_holds_its_speeds() {
     check_case(0, Some("none"));
 }
+
+/// A draw whose crank turns backwards is refused as the bench's own failure, naming the
+/// seed and the recording: an engine would stall there. Seed 100585 (a published case,
+/// fixed here as a bench's regression, not a diagnosis' test) reached −56 rpm at the
+/// crank in its run-up.
+#[test]
+fn a_crank_that_turns_backwards_is_no_bench() {
+    let dir = tempfile::Builder::new()
+        .prefix("benchtruth-backwards-")
+        .tempdir()
+        .expect("temp dir");
+    let e = benchtruth::write_case(100_585, None, dir.path())
+        .err()
+        .expect("refused")
+        .to_string();
+    assert!(
+        e.contains("seed 100585") && e.contains("turns backwards") && e.contains("run-up"),
+        "{e}"
+    );
+}
