@@ -159,13 +159,18 @@ fn measured_rpm(law: Option<&SensorLaw>, theta: f64, omega: f64, sample_s: f64) 
     rpm * factor
 }
 
-/// Simulates and writes one recording (CSV + sidecar); returns the CSV path and what the
-/// recording exercised of the effect.
-fn write_recording(
-    case: &Case,
-    idx: usize,
-    dir: &Path,
-) -> Result<(PathBuf, Option<Exercise>), WriteError> {
+/// One recording simulated, not yet written: CSV and sidecar texts, and what it
+/// exercised of the effect.
+struct Simulated {
+    stem: String,
+    csv: String,
+    sidecar: String,
+    exercise: Option<Exercise>,
+}
+
+/// Simulates one recording (CSV + sidecar text); nothing is written, so a case that fails
+/// in any recording leaves its directory as it was.
+fn simulate_recording(case: &Case, idx: usize) -> Result<Simulated, WriteError> {
     let rec = &case.campaign.recordings[idx];
     let c = &case.campaign;
     let plant = sim::plant_for(case, rec);
@@ -227,8 +232,6 @@ fn write_recording(
             case.seed, rec.stem
         )));
     }
-    let csv_path = dir.join(format!("{}.csv", rec.stem));
-    put(&csv_path, &csv)?;
     let mut side = format!(
         "format = 1\nkind = \"{}\"\nreference = \"{}\"\nload = {}\nlabel = \"{}\"\n",
         if rec.run_up { "run-up" } else { "steady" },
@@ -246,8 +249,12 @@ fn write_recording(
             case.truth.nodes[s.node].name, s.kind, s.lines
         );
     }
-    put(&dir.join(format!("{}.toml", rec.stem)), &side)?;
-    Ok((csv_path, meter.and_then(|m| m.result())))
+    Ok(Simulated {
+        stem: rec.stem.clone(),
+        csv,
+        sidecar: side,
+        exercise: meter.and_then(|m| m.result()),
+    })
 }
 
 /// `truth.toml`: effect, form, parameters, place, errors, campaign, seed, and what each
@@ -296,20 +303,12 @@ fn truth_toml(case: &Case, exercise: &[(String, Exercise)]) -> String {
 /// Draws the case of `seed` (class forced or `seed mod 11`) and writes it into `dir`.
 pub fn write_case(seed: u64, class: Option<&str>, dir: &Path) -> Result<CaseFiles, WriteError> {
     let case = draw_case(seed, class).map_err(WriteError::Draw)?;
-    std::fs::create_dir_all(dir).map_err(|source| WriteError::Io {
-        path: dir.to_path_buf(),
-        source,
-    })?;
-    // The range the bench's rubber fits take their band from (`sim::band`).
-    let (lo, hi) = crate::fitpoints::speed_range_rpm(&case.campaign);
-    let model = dir.join("model.toml");
-    put(&model, &model_toml(&case.user, lo, hi))?;
-    type Written = Result<(PathBuf, Option<Exercise>), WriteError>;
-    let results: Vec<Written> = std::thread::scope(|s| {
+    type Result1 = Result<Simulated, WriteError>;
+    let results: Vec<Result1> = std::thread::scope(|s| {
         let handles: Vec<_> = (0..case.campaign.recordings.len())
             .map(|i| {
                 let case = &case;
-                s.spawn(move || write_recording(case, i, dir))
+                s.spawn(move || simulate_recording(case, i))
             })
             .collect();
         handles
@@ -321,13 +320,27 @@ pub fn write_case(seed: u64, class: Option<&str>, dir: &Path) -> Result<CaseFile
             })
             .collect()
     });
-    let written = results.into_iter().collect::<Result<Vec<_>, _>>()?;
-    let exercise: Vec<(String, Exercise)> = written
-        .iter()
-        .zip(&case.campaign.recordings)
-        .filter_map(|((_, e), rec)| e.map(|e| (rec.stem.clone(), e)))
-        .collect();
-    let recordings = written.into_iter().map(|(p, _)| p).collect();
+    let simulated = results.into_iter().collect::<Result<Vec<_>, _>>()?;
+    // Every recording simulated: only now is anything written.
+    std::fs::create_dir_all(dir).map_err(|source| WriteError::Io {
+        path: dir.to_path_buf(),
+        source,
+    })?;
+    // The range the bench's rubber fits take their band from (`sim::band`).
+    let (lo, hi) = crate::fitpoints::speed_range_rpm(&case.campaign);
+    let model = dir.join("model.toml");
+    put(&model, &model_toml(&case.user, lo, hi))?;
+    let mut recordings = Vec::new();
+    let mut exercise: Vec<(String, Exercise)> = Vec::new();
+    for r in simulated {
+        let csv_path = dir.join(format!("{}.csv", r.stem));
+        put(&csv_path, &r.csv)?;
+        put(&dir.join(format!("{}.toml", r.stem)), &r.sidecar)?;
+        recordings.push(csv_path);
+        if let Some(e) = r.exercise {
+            exercise.push((r.stem, e));
+        }
+    }
     let truth = dir.join("truth.toml");
     put(&truth, &truth_toml(&case, &exercise))?;
     Ok(CaseFiles {

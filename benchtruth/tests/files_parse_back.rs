@@ -101,7 +101,7 @@ fn a_none_control_parses_back_and_holds_its_speeds() {
 /// A draw whose crank turns backwards is refused as the bench's own failure, naming the
 /// seed and the recording: an engine would stall there. Seed 100585 (a published case,
 /// fixed here as a bench's regression, not a diagnosis' test) reached −56 rpm at the
-/// crank in its run-up.
+/// crank in its run-up. Nothing is written: not even the model.
 #[test]
 fn a_crank_that_turns_backwards_is_no_bench() {
     let dir = tempfile::Builder::new()
@@ -109,11 +109,12 @@ fn a_crank_that_turns_backwards_is_no_bench() {
         .tempdir()
         .expect("temp dir");
     let e = benchtruth::write_case(100_585, None, dir.path())
-        .err()
-        .expect("refused")
+        .expect_err("refused")
         .to_string();
     assert!(
         e.contains("seed 100585") && e.contains("turns backwards") && e.contains("run-up"),
         "{e}"
     );
+    let left = std::fs::read_dir(dir.path()).expect("readable").count();
+    assert_eq!(left, 0, "a failed draw wrote {left} files");
 }
