@@ -16,7 +16,7 @@
 //! | `unmodelled_mode` | rubber stage or shaft | `inertia_kg_m2` of a middle flange | ¼ lightest node |
 //! | `unmodelled_mode` (`form = branch`, [`super::branch`]) | every node | `frequency_hz` of a branch | grid over the excited band |
 //! | `crank_variable_inertia` | engine without reciprocating mass | `mass_kg` per cylinder | 1100 kg/m³·bore³ |
-//! | `gear_backlash` | gear with mesh stiffness | `backlash_deg` | 0.05 |
+//! | `gear_backlash` (hard and `softened` contact, [`super::candidates_backlash`]) | gear with mesh stiffness | `backlash_deg` | 0.05 |
 //! | `cylinder_imbalance` | each cylinder | `pressure_scale` | 0.95 |
 //! | `sensor_artifact` | each station, `kind = tape_joint` | tape `joint_fraction` | 0.02 |
 //! | `sensor_artifact` | each station, `kind = pitch_error` | `error_deg` (eccentricity) | 0.05 |
@@ -63,6 +63,9 @@ impl Candidate {
     pub fn form(&self) -> Option<&str> {
         if self.param.key == "a1" && super::candidates_amplitude::is_elastic(self) {
             return Some(super::candidates_amplitude::LINEAR_FORM);
+        }
+        if let Some(form) = super::candidates_backlash::contact_form(self) {
+            return Some(form);
         }
         if self
             .fixed
@@ -185,14 +188,7 @@ pub fn candidates(model: &Model, stations: &[String], long_run: bool) -> Vec<Can
                 }
             }
             ConnectionKind::Gear(g) => {
-                if g.mesh_stiffness_nm_per_rad.is_some() {
-                    out.push(Candidate {
-                        effect: Effect::GearBacklash,
-                        fixed: at(),
-                        param: Param::new("backlash_deg", 0.05, 0.002, 2.0, true).absent_at(0.0),
-                        artifact_gains: None,
-                    });
-                }
+                out.extend(super::candidates_backlash::backlash_candidates(&c.name, g));
             }
         }
     }

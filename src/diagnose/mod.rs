@@ -41,6 +41,7 @@ mod aside;
 pub mod branch;
 pub mod candidates;
 pub mod candidates_amplitude;
+pub mod candidates_backlash;
 pub mod context;
 pub mod decide;
 pub mod drift;

@@ -12,7 +12,8 @@
 //! | [`rubber_power`] | frequency dependence as a causal power law (`form = power_law`) |
 //! | [`branch`] | unmodelled mode, branch form: a local mode hanging on any node |
 //! | [`hysteretic`] | rate-independent (hysteretic) damping in place of a viscous equivalent |
-//! | [`structure`] | structure and engine: unmodelled mode, variable crank inertia, backlash, imbalance |
+//! | [`structure`] | structure and engine: unmodelled mode, variable crank inertia, imbalance |
+//! | [`backlash`] | free play in a gear mesh, its contact softening and the mesh's damping |
 //! | [`sensor`] | sensor artifacts: a zebra tape's butt joint, a once-per-revolution pitch error |
 //! | [`param_error`] | plain parameter errors, named by their place in the model file |
 //! | [`rng`] | the seeded random numbers every draw comes from (same data on every machine) |
@@ -30,6 +31,7 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+pub mod backlash;
 pub mod branch;
 pub mod effect;
 pub mod hysteretic;

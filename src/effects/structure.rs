@@ -1,6 +1,6 @@
 //! Effects on the structure and the engine: a missing degree of freedom (seed 001's local
 //! coupling mode), the reciprocating masses (crank-angle-dependent inertia, seed 001 eq.
-//! 3–4), gear backlash, and one cylinder firing weaker or stronger.
+//! 3–4), and one cylinder firing weaker or stronger. Gear backlash is [`super::backlash`].
 
 use super::EffectError;
 use super::effect::{EffectSpec, Params};
@@ -228,48 +228,6 @@ pub(crate) fn crank_inertia(model: &mut Model, spec: &EffectSpec) -> Result<Appl
          crank angle about the same mean ({mean:.5} kg·m² per cylinder, taken from the \
          crank nodes) and adds the oscillating-mass torque of seed 001 eq. 3{dropped}"
     );
-    Ok((p.resolved, summary))
-}
-
-/// `gear_backlash`: gear `connection` (default the first with a mesh stiffness) has
-/// `backlash_deg` of total free play at its `to` side (default 0.2°), its tooth contact
-/// softened over `softening` times the half play (default 0: a hard contact;
-/// [`crate::model::Gear::backlash_softening_deg`]).
-pub(crate) fn backlash(model: &mut Model, spec: &EffectSpec) -> Result<Applied, EffectError> {
-    let mut p = Params::new(spec, &["connection", "backlash_deg", "softening"])?;
-    let first = model
-        .connections
-        .iter()
-        .find(
-            |c| matches!(&c.kind, ConnectionKind::Gear(g) if g.mesh_stiffness_nm_per_rad.is_some()),
-        )
-        .map(|c| c.name.clone());
-    let name = p.text("connection", first)?;
-    let deg = p.number("backlash_deg", 0.2, 1e-6, 10.0)?;
-    let softening = p.optional_number("softening", 0.0, 10.0)?.unwrap_or(0.0);
-    let Some(c) = model.connections.iter_mut().find(|c| c.name == name) else {
-        return Err(p.bad("connection", format!("no connection `{name}`")));
-    };
-    let ConnectionKind::Gear(g) = &mut c.kind else {
-        return Err(p.bad("connection", format!("`{name}` is no gear")));
-    };
-    if g.mesh_stiffness_nm_per_rad.is_none() {
-        return Err(p.bad(
-            "connection",
-            format!("gear `{name}` is rigid: backlash needs a mesh_stiffness"),
-        ));
-    }
-    if g.backlash_deg != 0.0 {
-        return Err(p.bad("connection", format!("gear `{name}` already has backlash")));
-    }
-    g.backlash_deg = deg;
-    g.backlash_softening_deg = 0.5 * softening * deg;
-    let contact = if softening > 0.0 {
-        format!(", its contact softened over {softening} of the half play")
-    } else {
-        String::new()
-    };
-    let summary = format!("gear `{name}` has {deg}° of free play at its output side{contact}");
     Ok((p.resolved, summary))
 }
 

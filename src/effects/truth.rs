@@ -7,7 +7,7 @@
 use super::effect::{Effect, EffectSpec, ParamValue, Params};
 use super::param_error::{ParameterError, apply_random_errors, scale_parameter};
 use super::sensor::SensorArtifact;
-use super::{EffectError, hysteretic, rubber, structure};
+use super::{EffectError, backlash, hysteretic, rubber, structure};
 use crate::model::{ConnectionKind, Model, validate};
 use crate::physics::{OperatingPoint, System};
 
@@ -74,7 +74,7 @@ pub fn build_truth(
         Effect::HystereticDamping => hysteretic::hysteretic(&mut model, user, spec)?,
         Effect::UnmodelledMode => structure::unmodelled_mode(&mut model, spec)?,
         Effect::CrankVariableInertia => structure::crank_inertia(&mut model, spec)?,
-        Effect::GearBacklash => structure::backlash(&mut model, spec)?,
+        Effect::GearBacklash => backlash::backlash(&mut model, spec)?,
         Effect::CylinderImbalance => structure::imbalance(&mut model, spec)?,
         Effect::SensorArtifact => {
             let (a, applied) = SensorArtifact::from_spec(spec, user)?;

@@ -1,0 +1,139 @@
+//! The `gear_backlash` candidates of one gear: free play with a hard tooth contact, and
+//! with a softened one; each with the mesh damped where the user's mesh has no damping
+//! ([`crate::effects::backlash`]).
+//!
+//! Why two contacts: a hard contact (the classical dead zone) and a contact softened over
+//! a quarter of the half play (Hertzian flattening, profile errors) rattle differently,
+//! and the one fitted parameter, the play, cannot make one look like the other. Measured
+//! on the independent bench's development cases 2087–2164 (8 backlash cases, half with a
+//! softened dead zone, half Hertzian; its softening is 0.1–0.3 of the half play):
+//!
+//! | candidates | named right | held-out χ²/N after, median |
+//! |---|---|---|
+//! | hard contact, undamped mesh (before) | 1/8 | 484 |
+//! | hard contact, mesh ζ = 0.1 | 5/8 | 295 |
+//! | softened contact, mesh ζ = 0.1 | 6/8 | 79.8 |
+//! | both | 8/8 | 75.6 |
+//!
+//! The softening is a fixed form, not fitted: the bench's own range is known here, so a
+//! quarter of the half play, inside it, is a choice to check on cases not drawn yet.
+
+use super::candidates::Candidate;
+use super::param::Param;
+use crate::effects::Effect;
+use crate::effects::backlash::DEFAULT_MESH_DAMPING_RATIO;
+use crate::model::Gear;
+
+/// The softened contact's width over the half play (the effect's `softening` key).
+pub const SOFTENING: f64 = 0.25;
+
+/// The softened candidate's form, as the report names it.
+pub const SOFTENED_FORM: &str = "softened";
+
+/// The backlash candidates of gear `name` (none for a rigid gear): a hard contact and a
+/// softened one, each fitting `backlash_deg` from 0.05°, the mesh damped at
+/// [`DEFAULT_MESH_DAMPING_RATIO`] when `gear` has no mesh damping.
+pub fn backlash_candidates(name: &str, gear: &Gear) -> Vec<Candidate> {
+    if gear.mesh_stiffness_nm_per_rad.is_none() {
+        return Vec::new();
+    }
+    let mut hard = vec![("connection", name.to_string())];
+    if gear.mesh_damping_nm_s_per_rad == 0.0 {
+        hard.push(("mesh_damping_ratio", DEFAULT_MESH_DAMPING_RATIO.to_string()));
+    }
+    let mut soft = hard.clone();
+    soft.push(("softening", SOFTENING.to_string()));
+    [soft, hard]
+        .into_iter()
+        .map(|fixed| Candidate {
+            effect: Effect::GearBacklash,
+            fixed,
+            param: Param::new("backlash_deg", 0.05, 0.002, 2.0, true).absent_at(0.0),
+            artifact_gains: None,
+        })
+        .collect()
+}
+
+/// `Some("softened")` for the softened backlash candidate; `None` for every other.
+pub fn contact_form(candidate: &Candidate) -> Option<&'static str> {
+    let softened = candidate.effect == Effect::GearBacklash
+        && candidate.fixed.iter().any(|(k, _)| *k == "softening");
+    softened.then_some(SOFTENED_FORM)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::diagnose::candidates::candidates;
+    use crate::effects::backlash::mesh_mode_inertia_kg_m2;
+    use crate::model::{ConnectionKind, Model, parse_model, presets};
+
+    fn bench() -> Model {
+        let text = presets::preset("diagnosis-bench").expect("shipped").text;
+        parse_model(text, "diagnosis-bench.toml").expect("valid")
+    }
+
+    fn gear_of(m: &Model) -> &Gear {
+        m.connections
+            .iter()
+            .find_map(|c| match &c.kind {
+                ConnectionKind::Gear(g) => Some(g),
+                _ => None,
+            })
+            .expect("a gear")
+    }
+
+    /// The bench's gear has both contacts, told apart by name; each applied model has
+    /// the fitted play, its contact, and the mesh damped at ζ = 0.1 of its own mode.
+    #[test]
+    fn a_gear_has_a_hard_and_a_softened_candidate_with_a_damped_mesh() {
+        let user = bench();
+        let all = candidates(&user, &[], false);
+        let mine: Vec<&Candidate> = all
+            .iter()
+            .filter(|c| c.effect == Effect::GearBacklash)
+            .collect();
+        let names: Vec<String> = mine.iter().map(|c| c.name()).collect();
+        assert_eq!(
+            names,
+            [
+                "gear_backlash at gearbox (softened)",
+                "gear_backlash at gearbox"
+            ]
+        );
+        let j = mesh_mode_inertia_kg_m2(&user, "gearbox").expect("two nodes");
+        for (c, softening) in mine.iter().zip([SOFTENING, 0.0]) {
+            let (model, _) = c.apply(&user, 0.2).expect("applies");
+            let g = gear_of(&model);
+            assert_eq!(g.backlash_deg, 0.2);
+            assert!((g.backlash_softening_deg - softening * 0.1).abs() < 1e-15);
+            let k = g.mesh_stiffness_nm_per_rad.expect("meshing");
+            let zeta = g.mesh_damping_nm_s_per_rad / (2.0 * (k * j).sqrt());
+            assert!(
+                (zeta - DEFAULT_MESH_DAMPING_RATIO).abs() < 1e-12,
+                "ζ {zeta}"
+            );
+        }
+    }
+
+    /// A mesh the user damped is left as it is, and a rigid gear has no candidate.
+    #[test]
+    fn a_damped_mesh_keeps_its_damping_and_a_rigid_gear_has_none() {
+        let mut user = bench();
+        for c in &mut user.connections {
+            if let ConnectionKind::Gear(g) = &mut c.kind {
+                g.mesh_damping_nm_s_per_rad = 3.0;
+            }
+        }
+        let mine = backlash_candidates("gearbox", gear_of(&user));
+        assert_eq!(mine.len(), 2);
+        for c in &mine {
+            assert!(c.fixed.iter().all(|(k, _)| *k != "mesh_damping_ratio"));
+            let (model, _) = c.apply(&user, 0.2).expect("applies");
+            assert_eq!(gear_of(&model).mesh_damping_nm_s_per_rad, 3.0);
+        }
+        let mut rigid = gear_of(&user).clone();
+        rigid.mesh_stiffness_nm_per_rad = None;
+        assert!(backlash_candidates("gearbox", &rigid).is_empty());
+    }
+}
