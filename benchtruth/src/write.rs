@@ -194,17 +194,21 @@ fn simulate_recording(case: &Case, idx: usize) -> Result<Simulated, WriteError> 
     // The first time at which the truth is no longer finite: a bench never writes NaN
     // (a diverged truth is the bench's failure, reported as such, not torsim's).
     let mut diverged_s: Option<f64> = None;
-    // The first time the crank turns backwards: an engine stalls there, so a truth that
-    // does it is no bench (seed 100585's run-up reached −56 rpm at the crank).
-    let mut reversed_s: Option<f64> = None;
-    let crank = case.truth.engine.node;
+    // The first time a node turns backwards against its mean direction: an engine
+    // stalls there, and a shaft that reverses through a resonance is no bench either
+    // (seed 100585's run-up reached −56 rpm at the crank; development seed 2117's brake
+    // went below 0 rpm).
+    let mut reversed: Option<(f64, usize)> = None;
+    let ratios = case.truth.speed_ratios();
     let mut meter = Meter::for_case(case);
     sim::run(&case.truth, &plant, c.rate_hz, |t, y| {
         if let Some(m) = meter.as_mut() {
             m.add(&y[..n_nodes]);
         }
-        if y[n_nodes + crank] <= 0.0 && reversed_s.is_none() {
-            reversed_s = Some(t);
+        if reversed.is_none() {
+            reversed = (0..n_nodes)
+                .find(|&i| y[n_nodes + i] * ratios[i] <= 0.0)
+                .map(|i| (t, i));
         }
         let _ = write!(csv, "{:.6}", c.clock_start_s + t);
         for (k, s) in c.stations.iter().enumerate() {
@@ -225,11 +229,11 @@ fn simulate_recording(case: &Case, idx: usize) -> Result<Simulated, WriteError> 
             case.seed, rec.stem, case.form
         )));
     }
-    if let Some(t) = reversed_s {
+    if let Some((t, i)) = reversed {
         return Err(WriteError::Draw(format!(
-            "seed {}: the crank turns backwards in `{}` at {t:.4} s: an engine would stall \
-             there, so the case is not usable and counts as a bench error",
-            case.seed, rec.stem
+            "seed {}: node `{}` turns backwards in `{}` at {t:.4} s: no running bench does that \
+             (an engine would stall), so the case is not usable and counts as a bench error",
+            case.seed, case.truth.nodes[i].name, rec.stem
         )));
     }
     let mut side = format!(

@@ -98,7 +98,7 @@ fn a_none_control_parses_back_and_holds_its_speeds() {
     check_case(0, Some("none"));
 }
 
-/// A draw whose crank turns backwards is refused as the bench's own failure, naming the
+/// A draw where a node turns backwards is refused as the bench's own failure, naming the
 /// seed and the recording: an engine would stall there. Seed 100585 (a published case,
 /// fixed here as a bench's regression, not a diagnosis' test) reached −56 rpm at the
 /// crank in its run-up. Nothing is written: not even the model.
@@ -112,7 +112,7 @@ fn a_crank_that_turns_backwards_is_no_bench() {
         .expect_err("refused")
         .to_string();
     assert!(
-        e.contains("seed 100585") && e.contains("turns backwards") && e.contains("run-up"),
+        e.contains("seed 100585") && e.contains("`crank` turns backwards") && e.contains("run-up"),
         "{e}"
     );
     let left = std::fs::read_dir(dir.path()).expect("readable").count();
