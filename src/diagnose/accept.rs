@@ -244,16 +244,22 @@ mod tests {
         assert!(e.contains("inertia.nowhere"), "{e}");
     }
 
-    /// Backlash at the gearbox: the gear gets the fitted free play, and the row's plain
-    /// factor (mesh stiffness × 1.1) comes with it; nothing else changes.
+    /// Backlash at the gearbox (hard contact, the undamped mesh damped at ζ = 0.1): the
+    /// gear gets the fitted free play and that damping, and the row's plain factor (mesh
+    /// stiffness × 1.1) comes with it; nothing else changes.
     #[test]
     fn an_effect_adds_the_fitted_physics_with_the_plain_factors() {
         let user = bench();
         let r = report(
             "gear_backlash",
-            &[("connection", text("gearbox")), ("backlash_deg", num(0.1))],
             &[
                 ("connection", text("gearbox")),
+                ("mesh_damping_ratio", text("0.1")),
+                ("backlash_deg", num(0.1)),
+            ],
+            &[
+                ("connection", text("gearbox")),
+                ("mesh_damping_ratio", text("0.1")),
                 ("backlash_deg", num(0.1)),
                 ("scale.connection.gearbox.mesh_stiffness", num(1.1)),
                 ("scale.inertia.brake", num(1.0)),
@@ -267,10 +273,12 @@ mod tests {
         assert_eq!(gear(&accepted).backlash_deg, 0.1);
         let k = gear(&user).mesh_stiffness_nm_per_rad.expect("mesh");
         assert_eq!(gear(&accepted).mesh_stiffness_nm_per_rad, Some(k * 1.1));
+        let j = crate::effects::backlash::mesh_mode_inertia_kg_m2(&user, "gearbox").expect("J");
         let mut expected = user.clone();
         if let ConnectionKind::Gear(g) = &mut expected.connections[0].kind {
             g.backlash_deg = 0.1;
             g.mesh_stiffness_nm_per_rad = Some(k * 1.1);
+            g.mesh_damping_nm_s_per_rad = 2.0 * 0.1 * (k * 1.1 * j).sqrt();
         }
         assert_eq!(accepted, expected);
         let mut nowhere = r.clone();
