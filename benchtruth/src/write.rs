@@ -307,8 +307,7 @@ fn truth_toml(case: &Case, exercise: &[(String, Exercise)]) -> String {
 /// Draws the case of `seed` (class forced or `seed mod 11`) and writes it into `dir`.
 pub fn write_case(seed: u64, class: Option<&str>, dir: &Path) -> Result<CaseFiles, WriteError> {
     let case = draw_case(seed, class).map_err(WriteError::Draw)?;
-    type Result1 = Result<Simulated, WriteError>;
-    let results: Vec<Result1> = std::thread::scope(|s| {
+    let results: Vec<Result<Simulated, WriteError>> = std::thread::scope(|s| {
         let handles: Vec<_> = (0..case.campaign.recordings.len())
             .map(|i| {
                 let case = &case;

@@ -17,9 +17,10 @@ use super::effect::{EffectSpec, Params};
 use super::truth::Applied;
 use crate::model::{ConnectionKind, Model};
 
-/// The mesh mode's damping ratio a backlash gets where the user's mesh has none, when
-/// `mesh_damping_ratio` is given without a number (the diagnosis' candidate uses it).
-/// Gear-pair models assume a few to about 15 %; 0.1 is the middle.
+/// The mesh mode's damping ratio the diagnosis' backlash candidates give a mesh the user
+/// left undamped, as their fixed `mesh_damping_ratio`
+/// ([`crate::diagnose::candidates_backlash`]). Gear-pair models assume a few to about
+/// 15 %; 0.1 is the middle.
 pub const DEFAULT_MESH_DAMPING_RATIO: f64 = 0.1;
 
 /// `gear_backlash`: gear `connection` (default the first with a mesh stiffness) has
@@ -50,11 +51,7 @@ pub(crate) fn backlash(model: &mut Model, spec: &EffectSpec) -> Result<Applied, 
     let deg = p.number("backlash_deg", 0.2, 1e-6, 10.0)?;
     let softening = p.optional_number("softening", 0.0, 10.0)?.unwrap_or(0.0);
     let ratio = p.optional_number("mesh_damping_ratio", 0.0, 2.0)?;
-    let inertia = model
-        .connections
-        .iter()
-        .find(|c| c.name == name)
-        .and_then(|c| mesh_mode_inertia_kg_m2(model, &c.name));
+    let inertia = mesh_mode_inertia_kg_m2(model, &name);
     let Some(c) = model.connections.iter_mut().find(|c| c.name == name) else {
         return Err(p.bad("connection", format!("no connection `{name}`")));
     };
@@ -100,10 +97,8 @@ pub fn mesh_mode_inertia_kg_m2(model: &Model, name: &str) -> Option<f64> {
     };
     let of = |node: &str| {
         model
-            .inertias
-            .iter()
-            .find(|n| n.name == node)
-            .map(|n| n.inertia_kg_m2)
+            .node_index(node)
+            .map(|i| model.inertias[i].inertia_kg_m2)
     };
     match (of(&c.from).map(|j| j / (g.ratio * g.ratio)), of(&c.to)) {
         (Some(a), Some(b)) => Some(a * b / (a + b)),
