@@ -38,6 +38,7 @@
 
 pub mod accept;
 mod aside;
+mod backlash_damping;
 pub mod branch;
 pub mod candidates;
 pub mod candidates_amplitude;
@@ -55,6 +56,7 @@ pub mod labels;
 pub mod multistart;
 pub mod observe;
 pub mod observe_runup;
+mod own_gain;
 pub mod parallel;
 pub mod param;
 pub mod places;

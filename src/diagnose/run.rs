@@ -3,6 +3,7 @@
 //! domain, score on held-out data, decide.
 
 use super::candidates::candidates;
+use super::context::Evaluated;
 use super::observe::{RunShape, observe};
 use super::restart::second_starts;
 use super::screen::{Screened, screen_one};
@@ -144,6 +145,8 @@ pub fn diagnose(
     }
     let k_plain = cx.plain.len();
     let before = cx.chi2(&baseline, true);
+    // Plain recalibrations found on the way ([`super::own_gain`]).
+    let mut recalibrations: Vec<Evaluated> = Vec::new();
     // When the user's model already fits, no candidate needs the time domain.
     if before > decide::NONE_CHI2 {
         step(0.5, "refitting the plain parameters with a sensor artifact")?;
@@ -173,7 +176,7 @@ pub fn diagnose(
         // (ln n / n, 0.065 at n = 55) outweighed every gain: validation case 1007's
         // local mode (fitted 0.489 against 0.518) was never verified, though its
         // screening predicted the held-out regime at χ²/N 1.17 against 3.17.
-        verify(
+        recalibrations = verify(
             &cx,
             &plain_fit,
             &mut screened,
@@ -188,9 +191,18 @@ pub fn diagnose(
         )?;
     }
     // The plain fit gets the further rounds a verified candidate had, so that no
-    // candidate wins by a better-converged plain fit alone.
+    // candidate wins by a better-converged plain fit alone; from the best plain point
+    // on the fitted data, its own or a candidate's with the effect closed
+    // ([`super::own_gain`]: published control 100662's candidates found better ones).
     step(0.9, "refining the plain parameters")?;
-    let refined = cx.rounds(plain_fit, None, VERIFY_ROUNDS, None);
+    let start = recalibrations.into_iter().fold(plain_fit, |best, r| {
+        if cx.chi2(&r, false) < cx.chi2(&best, false) {
+            r
+        } else {
+            best
+        }
+    });
+    let refined = cx.rounds(start, None, VERIFY_ROUNDS, None);
     plain_rejected.extend(refined.rejected);
     let plain_fit = refined.best;
     step(0.97, "deciding")?;

@@ -13,6 +13,7 @@ use super::observe::RunShape;
 use super::reversal::{REVERSAL_FRACTION, torque_reversal_runs};
 use super::trial;
 use crate::effects::Effect;
+use crate::effects::backlash::DEFAULT_MESH_DAMPING_RATIO;
 
 /// A candidate after screening (and, if it got that far, verification).
 #[derive(Debug, Clone)]
@@ -35,6 +36,10 @@ pub struct Screened {
     pub rejected: Option<String>,
     /// Steps of its fits that could not be simulated and were not taken.
     pub rejected_steps: Vec<String>,
+    /// Why the verified fit is no evidence of the effect although it gains: what else the
+    /// candidate brings made the gain ([`super::own_gain`]).
+    /// Such a candidate is never the verdict.
+    pub unsupported: Option<String>,
 }
 
 impl Screened {
@@ -48,6 +53,7 @@ impl Screened {
             in_time_domain: false,
             rejected: Some(trial::reason("screening", why)),
             rejected_steps: Vec::new(),
+            unsupported: None,
         }
     }
 }
@@ -87,6 +93,9 @@ pub fn screen_one(
 ) -> Result<Screened, DiagnoseError> {
     let mut in_time_domain = false;
     let mut rejected_steps = Vec::new();
+    // The candidate as screened: a backlash candidate may come out with another mesh
+    // damping.
+    let mut candidate = c.clone();
     // A time-domain search from the plain fit and from the user's values
     // ([`super::restart::search_in_time`]), noted with where it ended.
     let mut in_two_starts = |note: &str, runs: &[bool]| {
@@ -123,10 +132,30 @@ pub fn screen_one(
                     100.0 * REVERSAL_FRACTION
                 )));
             }
-            in_two_starts(
+            let (e, verified, note) = in_two_starts(
                 "screened in the time domain of the recordings where its torque can reverse",
                 &runs,
-            )?
+            )?;
+            // The mesh damping the recordings prefer ([`super::backlash_damping`]).
+            match super::backlash_damping::rechoose(cx, c, &e, &runs)? {
+                Some(r) => {
+                    rejected_steps.extend(r.rejected);
+                    in_time_domain = false;
+                    let ratio = r
+                        .candidate
+                        .fixed
+                        .iter()
+                        .find(|(k, _)| *k == "mesh_damping_ratio");
+                    let note = format!(
+                        "{note}; its mesh damping ratio {} fits them better than {}",
+                        ratio.map_or("?", |(_, v)| v.as_str()),
+                        DEFAULT_MESH_DAMPING_RATIO
+                    );
+                    candidate = r.candidate;
+                    (r.evaluated, verified, note)
+                }
+                None => (e, verified, note),
+            }
         }
         Effect::CouplingAmplitudeNonlinearity if !linear_sees(c) => {
             // Its stiffening is set by the vibration, which the linear model's tangent at
@@ -173,12 +202,13 @@ pub fn screen_one(
         }
     };
     Ok(Screened {
-        candidate: c.clone(),
+        candidate,
         evaluated,
         verified,
         note,
         in_time_domain,
         rejected: None,
         rejected_steps,
+        unsupported: None,
     })
 }

@@ -109,6 +109,7 @@ fn an_effect_that_worsens_held_out_data_is_not_named() {
             in_time_domain: true,
             rejected,
             rejected_steps: Vec::new(),
+            unsupported: None,
         };
         let why = DiagnoseError::Simulation {
             label: "Run-up".into(),
@@ -145,8 +146,23 @@ fn an_effect_that_worsens_held_out_data_is_not_named() {
         assert!(!last.verified);
         // The same effect improving the held-out data is named.
         let effect = evaluated(cx, 0.0, 0.0, Some(c.param.start));
-        let r = decided(cx, &baseline, &plain, &[screened(effect, None)]);
+        let r = decided(cx, &baseline, &plain, &[screened(effect.clone(), None)]);
         assert_eq!(r.verdict.effect, c.effect.to_string());
         assert!(r.fit.after < r.fit.before);
+        // Unless something else it brings made the gain (its plain parameters' path, a
+        // backlash's mesh damping): then it is set aside with that reason, and the
+        // verdict is the one without it (`none`: the recalibration worsens the held-out
+        // data).
+        let why = "gains too little by its own effect";
+        let mut unsupported = screened(effect, None);
+        unsupported.unsupported = Some(why.to_string());
+        let r = decided(cx, &baseline, &plain, &[unsupported]);
+        assert_eq!(r.verdict.effect, "none");
+        assert_eq!(r.fit.after, r.fit.before);
+        let row = r
+            .candidates
+            .iter()
+            .find(|r| r.effect == c.effect.to_string());
+        assert_eq!(row.and_then(|r| r.set_aside.as_deref()), Some(why));
     });
 }

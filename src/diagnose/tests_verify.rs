@@ -32,6 +32,7 @@ fn a_present_elastic_law_and_a_drift_are_verified_anyway() {
         in_time_domain: false,
         rejected: None,
         rejected_steps: Vec::new(),
+        unsupported: None,
     };
     let elastic = list
         .iter()

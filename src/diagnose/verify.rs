@@ -47,6 +47,9 @@ pub const VERIFY_ROUNDS: usize = 3;
 /// choose what gets verified), while it beats the plain fit's `plain_score` by
 /// [`SCREEN_MARGIN`], of at most [`VERIFIED_EFFECTS`] effects the linear model screened
 /// (and every effect screened in the time domain). `progress` is told each one's name.
+/// Returns the closed fits of the candidates checked for their own gain
+/// ([`super::own_gain`]) that are plain recalibrations: starts for the plain fit's
+/// refinement.
 pub fn verify(
     cx: &Context,
     plain: &Evaluated,
@@ -54,7 +57,7 @@ pub fn verify(
     plain_score: f64,
     score: &dyn Fn(&Evaluated) -> f64,
     progress: &mut dyn FnMut(usize, usize, &str) -> Result<(), DiagnoseError>,
-) -> Result<(), DiagnoseError> {
+) -> Result<Vec<Evaluated>, DiagnoseError> {
     let mut order: Vec<usize> = (0..screened.len())
         .filter(|i| !screened[*i].verified && screened[*i].rejected.is_none())
         .collect();
@@ -119,7 +122,42 @@ pub fn verify(
             }
         }
     }
-    Ok(())
+    // A verified candidate that could be the verdict must gain by its own effect
+    // ([`super::own_gain`]); checked side by side too.
+    let verified: Vec<usize> = chosen
+        .into_iter()
+        .filter(|i| {
+            let s = &screened[*i];
+            s.verified
+                && s.rejected.is_none()
+                && super::own_gain::could_be_named(cx, plain, &s.evaluated)
+        })
+        .collect();
+    let checks = super::parallel::map_reporting(
+        verified.len(),
+        cx.options.threads,
+        &|k| {
+            let s = &screened[verified[k]];
+            super::own_gain::closed(cx, &s.candidate, &s.evaluated)
+        },
+        &mut |_, _| Ok(()),
+    )?;
+    let mut recalibrations = Vec::new();
+    for (i, check) in verified.into_iter().zip(checks) {
+        match check {
+            Err(e) => return Err(e),
+            Ok(None) => {}
+            Ok(Some(closed)) => {
+                let s = &mut screened[i];
+                s.unsupported =
+                    super::own_gain::unsupported(cx, &s.candidate, &s.evaluated, &closed);
+                if super::own_gain::is_recalibration(cx, &closed) {
+                    recalibrations.push(closed);
+                }
+            }
+        }
+    }
+    Ok(recalibrations)
 }
 
 /// Candidates verified whatever their screening scored, as their parameter declares

@@ -48,7 +48,9 @@ pub(crate) fn backlash(model: &mut Model, spec: &EffectSpec) -> Result<Applied, 
         )
         .map(|c| c.name.clone());
     let name = p.text("connection", first)?;
-    let deg = p.number("backlash_deg", 0.2, 1e-6, 10.0)?;
+    // 0 closes the play: what is left is the mesh damping, if any
+    // ([`crate::diagnose::own_gain`] compares the two).
+    let deg = p.number("backlash_deg", 0.2, 0.0, 10.0)?;
     let softening = p.optional_number("softening", 0.0, 10.0)?.unwrap_or(0.0);
     let ratio = p.optional_number("mesh_damping_ratio", 0.0, 2.0)?;
     let inertia = mesh_mode_inertia_kg_m2(model, &name);
