@@ -275,7 +275,8 @@ fn summary(report: &Report, model_name: &str) -> String {
     );
     outln!(
         text,
-        "\ncandidates, best first (score = held-out χ²/N + k·ln(n)/n, lower is better; * the verdict):"
+        "\ncandidates, best first (score = max(held-out χ²/N, {}) + k·ln(n)/n, lower is better; * verdict):",
+        torsim::diagnose::decide::NOISE_CHI2
     );
     let header: Vec<String> = ["", "effect", "k", "χ²/N held out after", "score"]
         .map(String::from)

@@ -101,7 +101,10 @@ pub fn report_html(report: &Report, model_name: &str) -> String {
     } else {
         tables::resonances(&mut out, report);
     }
-    out.push_str("<h2 id=\"candidates\">Candidate effects</h2>\n<p>Every effect tried, best first. Each was screened cheaply on the fit recordings (on the linear model, or in the time domain of the recordings that show it), the most promising were fitted again in the time domain on every fit recording (its own parameters together with scale factors of the plain parameters), then scored on the held-out ones; only those (<em>time domain</em>) can be the verdict, the others' numbers are the screening's estimate. χ²/N is the mean of z² over the amplitudes compared. <b>Score</b> = held-out χ² per amplitude + k·ln(n)/n (the BIC penalty of its k fitted parameters on n fitted amplitudes); lower is better. The verdict's row is highlighted.</p>\n");
+    out.push_str(&format!("<h2 id=\"candidates\">Candidate effects</h2>\n<p>Every effect tried, best first. Each was screened cheaply on the fit recordings (on the linear model, or in the time domain of the recordings that show it), the most promising were fitted again in the time domain on every fit recording (its own parameters together with scale factors of the plain parameters), then scored on the held-out ones; only those (<em>time domain</em>) can be the verdict, the others' numbers are the screening's estimate. χ²/N is the mean of z² over the amplitudes compared. <b>Score</b> = held-out χ² per amplitude, counted from {noise} up (below it every model fits to the noise), + k·ln(n)/n (the BIC penalty of its k fitted parameters on n fitted amplitudes); lower is better. An effect is named only when it beats the plain parameters' score by {margin:.0} % and its own fit with the effect closed by as much; a row set aside says which rule passed it over. The verdict's row is highlighted.</p>\n",
+        margin = 100.0 * super::decide::EFFECT_MARGIN,
+        noise = super::decide::NOISE_CHI2
+    ));
     tables::candidates(&mut out, report);
     if !report.not_fitted.is_empty() {
         out.push_str("<p class=\"small\">Not fitted, their signature being absent: ");

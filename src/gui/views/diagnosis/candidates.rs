@@ -7,16 +7,17 @@ use crate::gui::session::diagnosis::finished::{sig4, value_text};
 use crate::gui::views::diagnosis::verdict::VERDICT_COLOR;
 use egui::{RichText, Ui};
 use torsim::diagnose::Report;
-use torsim::diagnose::decide::EFFECT_MARGIN;
+use torsim::diagnose::decide::{EFFECT_MARGIN, NOISE_CHI2};
 
 /// The table.
 pub fn candidates_ui(report: &Report, ui: &mut Ui) {
     ui.label(RichText::new("Candidates").strong());
     ui.label(
         RichText::new(format!(
-            "score = held-out χ²/N + k·ln(n)/n (k fitted parameters on n fitted amplitudes); \
-             lower is better. An effect must beat the plain parameters' score by {:.0} % to \
-             be named.",
+            "score = held-out χ²/N (from {NOISE_CHI2} up: below it every model fits to the \
+             noise) + k·ln(n)/n (k fitted parameters on n fitted amplitudes); lower is better. \
+             An effect must beat the plain parameters' score by {:.0} %, and its own fit with \
+             the effect closed by as much, to be named.",
             100.0 * EFFECT_MARGIN
         ))
         .weak(),
