@@ -21,6 +21,8 @@ const STEADY_RPM: f64 = 160.0;
 const HEIGHT: f32 = 280.0;
 /// Width of the colour scale, points.
 const SCALE_WIDTH: f32 = 80.0;
+/// The narrowest a station's plot is drawn, px: its speed axis still reads.
+const MIN_PLOT_WIDTH: f32 = 200.0;
 
 const NEUTRAL: [f32; 3] = [70.0, 70.0, 70.0];
 const ABOVE: [f32; 3] = [235.0, 65.0, 45.0];
@@ -135,20 +137,27 @@ pub fn map_ui(report: &Report, ui: &mut Ui) {
         .map(|w| w[1] - w[0])
         .fold(f64::INFINITY, f64::min);
     let step = if step.is_finite() { step } else { 0.5 };
+    // As many plots to a row as fit at [`MIN_PLOT_WIDTH`] beside the scale, the rest on
+    // rows below: a row wider than the panel would widen everything under it, and the
+    // notes below would then wrap past the window's edge.
     let spacing = ui.spacing().item_spacing.x;
-    let width = ((ui.available_width() - SCALE_WIDTH - spacing * stations.len() as f32)
-        / stations.len() as f32)
-        .max(200.0);
-    ui.horizontal(|ui| {
-        for station in &stations {
-            let cells = drawn(report, station, step);
-            ui.vertical(|ui| {
-                ui.label(format!("station {station}"));
-                station_plot(ui, station, &cells, width);
-            });
-        }
-        scale_ui(ui);
-    });
+    let room = ui.available_width() - SCALE_WIDTH - spacing;
+    let per_row = ((room / (MIN_PLOT_WIDTH + spacing)).floor() as usize).clamp(1, stations.len());
+    let width = (room / per_row as f32 - spacing).max(MIN_PLOT_WIDTH);
+    for (row, chunk) in stations.chunks(per_row).enumerate() {
+        ui.horizontal(|ui| {
+            for station in chunk {
+                let cells = drawn(report, station, step);
+                ui.vertical(|ui| {
+                    ui.label(format!("station {station}"));
+                    station_plot(ui, station, &cells, width);
+                });
+            }
+            if row == 0 {
+                scale_ui(ui);
+            }
+        });
+    }
 }
 
 /// One station's plot.
