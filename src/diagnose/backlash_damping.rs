@@ -25,6 +25,7 @@
 
 use super::DiagnoseError;
 use super::candidates::Candidate;
+use super::candidates_backlash::MESH_DAMPING_KEY as KEY;
 use super::context::{Context, Evaluated};
 use super::fit::parallel_map;
 use super::surrogate::scaled;
@@ -33,9 +34,6 @@ use super::trial;
 /// The mesh damping ratios tried beside [`DEFAULT_MESH_DAMPING_RATIO`] (0.1): a lightly damped
 /// mesh (a few per cent, as the bench's 0.74–1 %) and a heavily damped one (its 23 %).
 pub const ALTERNATIVES: [f64; 2] = [0.02, 0.3];
-
-/// The key the candidates fix the damping with.
-const KEY: &str = "mesh_damping_ratio";
 
 /// A backlash candidate with another mesh damping, fitted on the recordings that show it.
 #[derive(Debug)]

@@ -27,6 +27,17 @@ use crate::model::Gear;
 /// The softened contact's width over the half play (the effect's `softening` key).
 pub const SOFTENING: f64 = 0.25;
 
+/// The fixed key a candidate damps an undamped mesh with.
+pub const MESH_DAMPING_KEY: &str = "mesh_damping_ratio";
+
+/// The mesh damping ratio `c` fixes, as written in its keys; `None` when it fixes none.
+pub fn mesh_damping_ratio(c: &Candidate) -> Option<&str> {
+    c.fixed
+        .iter()
+        .find(|(k, _)| *k == MESH_DAMPING_KEY)
+        .map(|(_, v)| v.as_str())
+}
+
 /// The softened candidate's form, as the report names it.
 pub const SOFTENED_FORM: &str = "softened";
 
@@ -39,7 +50,7 @@ pub fn backlash_candidates(name: &str, gear: &Gear) -> Vec<Candidate> {
     }
     let mut hard = vec![("connection", name.to_string())];
     if gear.mesh_damping_nm_s_per_rad == 0.0 {
-        hard.push(("mesh_damping_ratio", DEFAULT_MESH_DAMPING_RATIO.to_string()));
+        hard.push((MESH_DAMPING_KEY, DEFAULT_MESH_DAMPING_RATIO.to_string()));
     }
     let mut soft = hard.clone();
     soft.push(("softening", SOFTENING.to_string()));

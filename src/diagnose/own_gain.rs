@@ -89,8 +89,8 @@ pub fn unsupported(
     if with <= (1.0 - EFFECT_MARGIN) * without {
         return None;
     }
-    let kept = match c.fixed.iter().find(|(k, _)| *k == "mesh_damping_ratio") {
-        Some((_, z)) => format!(" and the mesh damping it brings (ζ = {z})"),
+    let kept = match super::candidates_backlash::mesh_damping_ratio(c) {
+        Some(z) => format!(" and the mesh damping it brings (ζ = {z})"),
         None => String::new(),
     };
     Some(format!(

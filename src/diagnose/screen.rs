@@ -141,14 +141,10 @@ pub fn screen_one(
                 Some(r) => {
                     rejected_steps.extend(r.rejected);
                     in_time_domain = false;
-                    let ratio = r
-                        .candidate
-                        .fixed
-                        .iter()
-                        .find(|(k, _)| *k == "mesh_damping_ratio");
+                    let ratio = super::candidates_backlash::mesh_damping_ratio(&r.candidate);
                     let note = format!(
                         "{note}; its mesh damping ratio {} fits them better than {}",
-                        ratio.map_or("?", |(_, v)| v.as_str()),
+                        ratio.unwrap_or("?"),
                         DEFAULT_MESH_DAMPING_RATIO
                     );
                     candidate = r.candidate;
