@@ -164,7 +164,7 @@ fn cost_on(cx: &Context, e: &Evaluated, runs: &[bool]) -> f64 {
 /// The time-domain search ([`Context::fit_time_domain`]) of `c` on `runs`, from `plain`,
 /// the plain fit, and from `baseline`, the user's model ([`second_start_in_time`]): the
 /// better of the two, whether it is the second and so a whole-campaign fit, and the
-/// steps rejected on the way. Backlash and the elastic amplitude law are screened so.
+/// steps rejected on the way. Backlash, the elastic amplitude law and thermal drift are screened so.
 pub fn search_in_time(
     cx: &Context,
     plain: &Evaluated,
@@ -183,12 +183,12 @@ pub fn search_in_time(
 }
 
 /// The second start of an effect screened in the time domain (backlash, the elastic
-/// amplitude law): its search
-/// ([`Context::fit_time_domain`]) from `baseline`, the user's model, beside `first`, the
-/// search from the plain fit, on the same `runs`. When it ends lower there, it is run on
-/// the whole campaign and the plain parameters are refitted with it for one round, so
-/// that it is ranked and verified as a whole-campaign fit (`in_time_domain`); otherwise
-/// `None` and the first start stands. A second start that cannot be simulated is a
+/// amplitude law, thermal drift): its search ([`Context::fit_time_domain`]) from
+/// `baseline`, the user's model, beside `first`, the search from the plain fit, on the
+/// same `runs`. When it ends lower there, it is run on the whole campaign and the plain
+/// parameters are refitted with it for one round; when that brings it below `first` on
+/// the whole campaign's fitted data, it stands and is ranked and verified as a
+/// whole-campaign fit (`in_time_domain`); otherwise `None` and the first start stands. A second start that cannot be simulated is a
 /// rejected step, returned with the reason; only a fatal error (cancelling) is an error.
 ///
 /// Development seed 2032 (Hertzian contact after 0.106° of play): from the plain fit the
@@ -230,10 +230,13 @@ pub fn second_start_in_time(
         Ok(whole) => {
             let stepped = cx.rounds(whole, Some(c), 1, None);
             rejected.extend(stepped.rejected);
-            // Found elsewhere but higher: it stands only if the plain parameters'
-            // refit with it in place brings it below the first start, which had them
-            // fitted already.
-            if !lower && cx.chi2(&stepped.best, false) >= cx.chi2(first, false) {
+            // It stands only if the plain parameters' refit with it in place brings it
+            // below the first start on the whole campaign's fitted data, which the first
+            // had fitted already: lower on the screened runs alone is not enough
+            // (validation case 1005, thermal drift: from the user's values 519 J/K
+            // screened lower on the long run, and held out 73.5 after verification
+            // against 39.5 from the plain fit's 2700 J/K).
+            if cx.chi2(&stepped.best, false) >= cx.chi2(first, false) {
                 return Ok((None, rejected));
             }
             Ok((Some(stepped.best), rejected))

@@ -20,10 +20,49 @@ const ROUND_GAIN: f64 = 0.005;
 /// round for one point (on the reference thermal campaign 6.0 → 4.7 s, same capacity).
 const SEARCH_GRID: usize = 4;
 pub(super) const SEARCH_HALVINGS: usize = 1;
-/// Steps the grid goes on past its end when the best is there: to a factor 27 beyond it.
-/// Validation cases 1038 and development 2006 (thermal drift) ended at the grid's lowest
-/// heat capacity, 33 J/K, where the truths hold 5.7 J/K and less.
+/// Stages the grid goes on past its end when the best is there, [`EXTENSION_STEPS`] steps
+/// a stage side by side: to a factor 3⁶ = 729 beyond it. Validation cases 1038 and
+/// development 2006 (thermal drift) ended at the grid's lowest heat capacity, 33 J/K,
+/// where the truths hold 5.7 J/K and less; with one step a stage (three, to a factor 27)
+/// the seventh and eighth published runs' thermal cases ended at the third step, 2.1 J/K,
+/// where the truth of one (100775) holds 0.5 J/K in torsim's −1.33 %/K law.
 const SEARCH_EXTENSIONS: usize = 3;
+/// Steps of one extension stage, run side by side on two threads.
+const EXTENSION_STEPS: usize = 2;
+
+/// The next stage of a grid extension, in the search coordinate: [`EXTENSION_STEPS`]
+/// steps of `step` past the end of `ends` (low, high) where `best` is, away from the
+/// effect's absence (below the grid when `absent_above`), kept within `bounds` (a bound
+/// is run once); `None` when `best` is inside the grid, at the absence's end, or the end
+/// is at its bound. `ends` moves to the stage's last step.
+fn extension(
+    best: f64,
+    ends: &mut (f64, f64),
+    bounds: (f64, f64),
+    step: f64,
+    absent_above: bool,
+) -> Option<Vec<f64>> {
+    let (lo, hi) = bounds;
+    let steps = |from: f64, sign: f64| -> Vec<f64> {
+        (1..=EXTENSION_STEPS)
+            .map(|k| from + sign * k as f64 * step)
+            .collect()
+    };
+    let next = if best <= ends.0 && ends.0 > lo && absent_above {
+        let next = steps(ends.0, -1.0);
+        ends.0 = *next.last()?;
+        next
+    } else if best >= ends.1 && ends.1 < hi && !absent_above {
+        let next = steps(ends.1, 1.0);
+        ends.1 = *next.last()?;
+        next
+    } else {
+        return None;
+    };
+    let mut next: Vec<f64> = next.into_iter().map(|u| u.clamp(lo, hi)).collect();
+    next.dedup();
+    Some(next)
+}
 
 /// Where a fit ended, and the steps it rejected on the way (why each could not be run).
 #[derive(Debug, Clone)]
@@ -87,7 +126,7 @@ impl Context<'_> {
     /// one, not a gradient one: an effect like backlash makes the simulated amplitudes a
     /// rough function of its parameter, where finite differences mislead. A grid a factor
     /// 3 apart ([`SEARCH_GRID`] points, extended past an end where the best is, up to
-    /// [`SEARCH_EXTENSIONS`] steps), then the bracket around the best halved (in
+    /// [`SEARCH_EXTENSIONS`] stages of [`EXTENSION_STEPS`] steps), then the bracket around the best halved (in
     /// `ln x`) [`SEARCH_HALVINGS`] times, then the parabola through the last three points.
     /// A value that cannot be simulated is a rejected step (listed in the result); when
     /// none can be, the candidate is rejected with a [`DiagnoseError::Simulation`].
@@ -151,8 +190,8 @@ impl Context<'_> {
             kept.as_ref()
                 .map_or((centre, f64::INFINITY), |k| (k.0, k.1))
         };
-        // A best at an end of the grid is no bracket: the grid goes on a step at a time
-        // in that direction, up to [`SEARCH_EXTENSIONS`] steps or the bound, but only
+        // A best at an end of the grid is no bracket: the grid goes on two steps at a time
+        // in that direction, up to [`SEARCH_EXTENSIONS`] stages or the bound, but only
         // away from the effect's absence. Towards it the plain factors held at `at`
         // decide: they took part of the effect already (validation case 1005, thermal
         // drift: the grid went on to 72 900 J/K, where the stage hardly warms, and the
@@ -167,19 +206,13 @@ impl Context<'_> {
         } else {
             0
         };
-        let (mut low_end, mut high_end) = (grid[0], grid[SEARCH_GRID - 1]);
+        let mut ends = (grid[0], grid[SEARCH_GRID - 1]);
         for _ in 0..extensions {
             let (b, _) = best_of(&kept);
-            let next = if b <= low_end && low_end > lo && absent_above {
-                low_end -= step;
-                low_end
-            } else if b >= high_end && high_end < hi && !absent_above {
-                high_end += step;
-                high_end
-            } else {
+            let Some(next) = extension(b, &mut ends, (lo, hi), step, absent_above) else {
                 break;
             };
-            stage(&[next], &mut kept, &mut tried);
+            stage(&next, &mut kept, &mut tried);
         }
         let mut h = step;
         for _ in 0..SEARCH_HALVINGS {
@@ -252,5 +285,46 @@ impl Context<'_> {
             at.factors.clone(),
             Some(value),
         ))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A heat capacity's search (absent above, in ln x, a factor 3 a step): a best at the
+    /// grid's low end goes two steps down a stage, down to the bound, which runs once; a
+    /// best inside the grid or at the absence's end stops it.
+    #[test]
+    fn an_extension_goes_two_steps_away_from_the_absence_down_to_the_bound() {
+        let step = 3f64.ln();
+        let bounds = (0.05f64.ln(), 1.0e5f64.ln());
+        let mut ends = (57.7f64.ln(), 1559.0f64.ln());
+        let x = |v: &[f64]| -> Vec<f64> { v.iter().map(|u| u.exp()).collect() };
+        let next = extension(ends.0, &mut ends, bounds, step, true).expect("at the low end");
+        assert_eq!(next.len(), EXTENSION_STEPS);
+        let values = x(&next);
+        assert!((values[0] - 57.7 / 3.0).abs() < 1e-9 && (values[1] - 57.7 / 9.0).abs() < 1e-9);
+        assert!((ends.0 - next[1]).abs() < 1e-12);
+        // Two more stages reach 57.7/729 = 0.079 J/K; the next two steps (0.026 and
+        // 0.009) are both past the bound of 0.05.
+        for _ in 0..2 {
+            extension(ends.0, &mut ends, bounds, step, true).expect("still above the bound");
+        }
+        assert!((ends.0.exp() - 57.7 / 729.0).abs() < 1e-9);
+        let last = extension(ends.0, &mut ends, bounds, step, true).expect("to the bound");
+        assert_eq!(
+            last,
+            vec![bounds.0],
+            "both steps past the bound are the bound, once"
+        );
+        assert!(extension(ends.0, &mut ends, bounds, step, true).is_none());
+        // Inside the grid, or at the end towards the absence: no extension.
+        let mut grid = (57.7f64.ln(), 1559.0f64.ln());
+        assert!(extension(300f64.ln(), &mut grid, bounds, step, true).is_none());
+        assert!(extension(grid.1, &mut grid, bounds, step, true).is_none());
+        // An absence below (a play at 0): the high end goes on up.
+        let up = extension(grid.1, &mut grid, bounds, step, false).expect("away from 0");
+        assert!(up.iter().all(|u| *u > 1559.0f64.ln()));
     }
 }

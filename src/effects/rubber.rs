@@ -202,8 +202,8 @@ fn shifted_law(seed: [f64; 3], t0_c: f64) -> Poly {
 }
 
 /// `coupling_thermal_drift`: the stage warms by its own loss into a lumped heat capacity
-/// (`capacity_j_per_k`, default 300 J/K: about 0.17 kg of loaded rubber) and cools to
-/// `ambient_c` (default its start temperature) through `conductance_w_per_k` (default
+/// (`capacity_j_per_k`, default 300 J/K: about 0.17 kg of loaded rubber; at least
+/// 0.01 J/K, for a small loss that warms visibly) and cools to `ambient_c` (default its start temperature) through `conductance_w_per_k` (default
 /// 1.5 W/K; time constant 200 s), or with the conductance that gives `time_constant_s`
 /// (capacity over conductance, s; the diagnosis reads it off a long run's drift,
 /// [`crate::diagnose`]'s thermal candidate). A stage without temperature laws gets seed
@@ -221,7 +221,7 @@ pub(crate) fn thermal(model: &mut Model, spec: &EffectSpec) -> Result<Applied, E
         ],
     )?;
     let j = stage_index(model, &mut p)?;
-    let capacity = p.number("capacity_j_per_k", 300.0, 1.0, 1.0e7)?;
+    let capacity = p.number("capacity_j_per_k", 300.0, 0.01, 1.0e7)?;
     let conductance = match p.optional_number("time_constant_s", 1e-2, 1e7)? {
         Some(tau_s) => {
             if spec.params.contains_key("conductance_w_per_k") {
@@ -320,5 +320,29 @@ mod tests {
         let both = spec.with("conductance_w_per_k", 2.0);
         let message = build_truth(&user, &both, 0.0, 0).unwrap_err().to_string();
         assert!(message.contains("time_constant_s"), "{message}");
+    }
+
+    /// A capacity down to 0.01 J/K is accepted (the diagnosis fits 0.3 J/K on development
+    /// case 2149); below it, it is refused, naming the key.
+    #[test]
+    fn a_small_heat_capacity_is_accepted_down_to_its_bound() {
+        use crate::effects::{Effect, EffectSpec, build_truth};
+        use crate::model::{parse_model, presets};
+        let text = presets::preset("diagnosis-bench").expect("shipped").text;
+        let user = parse_model(text, "bench.toml").unwrap();
+        let spec =
+            |c: f64| EffectSpec::new(Effect::CouplingThermalDrift).with("capacity_j_per_k", c);
+        let truth = build_truth(&user, &spec(0.01), 0.0, 0).expect("at the bound");
+        let capacity = truth.model.connections.iter().find_map(|c| match &c.kind {
+            crate::model::ConnectionKind::Rubber(r) => {
+                r.thermal.as_ref().map(|t| t.capacity_j_per_k)
+            }
+            _ => None,
+        });
+        assert_eq!(capacity, Some(0.01));
+        let message = build_truth(&user, &spec(0.009), 0.0, 0)
+            .unwrap_err()
+            .to_string();
+        assert!(message.contains("capacity_j_per_k"), "{message}");
     }
 }
