@@ -164,7 +164,8 @@ fn cost_on(cx: &Context, e: &Evaluated, runs: &[bool]) -> f64 {
 /// The time-domain search ([`Context::fit_time_domain`]) of `c` on `runs`, from `plain`,
 /// the plain fit, and from `baseline`, the user's model ([`second_start_in_time`]): the
 /// better of the two, whether it is the second and so a whole-campaign fit, and the
-/// steps rejected on the way. Backlash, the elastic amplitude law and thermal drift are screened so.
+/// steps rejected on the way. Backlash, the elastic amplitude law and thermal drift are
+/// screened so.
 pub fn search_in_time(
     cx: &Context,
     plain: &Evaluated,
@@ -188,8 +189,8 @@ pub fn search_in_time(
 /// same `runs`. When it ends lower there, it is run on the whole campaign and the plain
 /// parameters are refitted with it for one round; when that brings it below `first` on
 /// the whole campaign's fitted data, it stands and is ranked and verified as a
-/// whole-campaign fit (`in_time_domain`); otherwise `None` and the first start stands. A second start that cannot be simulated is a
-/// rejected step, returned with the reason; only a fatal error (cancelling) is an error.
+/// whole-campaign fit (`in_time_domain`); otherwise `None` and the first start stands.
+/// A second start that cannot be simulated is a rejected step, returned with the reason; only a fatal error (cancelling) is an error.
 ///
 /// Development seed 2032 (Hertzian contact after 0.106° of play): from the plain fit the
 /// search ended at the start, 0.05° (held-out χ²/N 87 310 after verification); from the

@@ -24,8 +24,9 @@ pub(super) const SEARCH_HALVINGS: usize = 1;
 /// a stage side by side: to a factor 3⁶ = 729 beyond it. Validation cases 1038 and
 /// development 2006 (thermal drift) ended at the grid's lowest heat capacity, 33 J/K,
 /// where the truths hold 5.7 J/K and less; with one step a stage (three, to a factor 27)
-/// the seventh and eighth published runs' thermal cases ended at the third step, 2.1 J/K,
-/// where the truth of one (100775) holds 0.5 J/K in torsim's −1.33 %/K law.
+/// the eighth published run's 100775 ended at the bottom of that reach, 1.2 J/K (a
+/// halving below the third step, 2.1 J/K), where its truth holds 0.46 J/K in torsim's
+/// −1.33 %/K law.
 const SEARCH_EXTENSIONS: usize = 3;
 /// Steps of one extension stage, run side by side on two threads.
 const EXTENSION_STEPS: usize = 2;
@@ -126,10 +127,11 @@ impl Context<'_> {
     /// one, not a gradient one: an effect like backlash makes the simulated amplitudes a
     /// rough function of its parameter, where finite differences mislead. A grid a factor
     /// 3 apart ([`SEARCH_GRID`] points, extended past an end where the best is, up to
-    /// [`SEARCH_EXTENSIONS`] stages of [`EXTENSION_STEPS`] steps), then the bracket around the best halved (in
-    /// `ln x`) [`SEARCH_HALVINGS`] times, then the parabola through the last three points.
-    /// A value that cannot be simulated is a rejected step (listed in the result); when
-    /// none can be, the candidate is rejected with a [`DiagnoseError::Simulation`].
+    /// [`SEARCH_EXTENSIONS`] stages of [`EXTENSION_STEPS`] steps), then the bracket
+    /// around the best halved (in `ln x`) [`SEARCH_HALVINGS`] times, then the parabola
+    /// through the last three points. A value that cannot be simulated is a rejected step
+    /// (listed in the result); when none can be, the candidate is rejected with a
+    /// [`DiagnoseError::Simulation`].
     pub fn fit_time_domain(
         &self,
         at: &Evaluated,

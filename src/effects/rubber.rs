@@ -203,10 +203,11 @@ fn shifted_law(seed: [f64; 3], t0_c: f64) -> Poly {
 
 /// `coupling_thermal_drift`: the stage warms by its own loss into a lumped heat capacity
 /// (`capacity_j_per_k`, default 300 J/K: about 0.17 kg of loaded rubber; at least
-/// 0.01 J/K, for a small loss that warms visibly) and cools to `ambient_c` (default its start temperature) through `conductance_w_per_k` (default
-/// 1.5 W/K; time constant 200 s), or with the conductance that gives `time_constant_s`
-/// (capacity over conductance, s; the diagnosis reads it off a long run's drift,
-/// [`crate::diagnose`]'s thermal candidate). A stage without temperature laws gets seed
+/// 0.01 J/K, for a small loss that warms visibly) and cools to `ambient_c` (default its
+/// start temperature) through `conductance_w_per_k` (default 1.5 W/K; time constant
+/// 200 s), or with the conductance that gives `time_constant_s` (capacity over
+/// conductance, s; the diagnosis reads it off a long run's drift, [`crate::diagnose`]'s
+/// thermal candidate). A stage without temperature laws gets seed
 /// 000 eq. 10–11 by [`shifted_law`]: −1.33 %/K in stiffness and −0.88 %/K in damping at
 /// the start.
 pub(crate) fn thermal(model: &mut Model, spec: &EffectSpec) -> Result<Applied, EffectError> {
