@@ -40,6 +40,10 @@ pub struct SimulateArgs {
     /// Relative tolerance of the integrator.
     #[arg(long, default_value_t = 1e-5)]
     pub rtol: f64,
+    /// Time the start speed is held after settling and before recording, s: a
+    /// self-heating rubber stage warms meanwhile (settling holds its temperature).
+    #[arg(long, default_value_t = 0.0)]
+    pub hold_s: f64,
     /// Integrator: auto (exact for steady runs of linear models, else Dormand–Prince unless
     /// the model is stiff), explicit, implicit (ROS2) or exact.
     #[arg(long, value_enum, default_value_t = MethodArg::Auto)]
@@ -114,6 +118,7 @@ pub fn run(a: &SimulateArgs) -> Result<(), CliError> {
         load: check_load(a.load)?,
         rate_hz: a.rate_hz,
         rtol: a.rtol,
+        hold_s: a.hold_s,
         method,
         ..RunOptions::default()
     };

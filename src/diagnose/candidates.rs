@@ -24,6 +24,7 @@
 use super::param::{Param, Verification};
 use super::sensor::{ArtifactForm, TapeJoint};
 use crate::effects::rubber_power as power;
+use crate::effects::rubber_thermal;
 use crate::effects::{Effect, EffectSpec, build_truth};
 use crate::model::{ConnectionKind, Model};
 use std::sync::Arc;
@@ -152,7 +153,7 @@ pub fn candidates(model: &Model, stations: &[String], long_run: bool) -> Vec<Can
                 causal.fixed.push(("form", power::FORM.to_string()));
                 out.push(causal);
                 if long_run {
-                    out.push(add(
+                    let mut thermal = add(
                         Effect::CouplingThermalDrift,
                         // Its grid search goes on past the grid's ends: validation
                         // case 1005 was named right from the grid's end at 2700 J/K.
@@ -167,7 +168,14 @@ pub fn candidates(model: &Model, stations: &[String], long_run: bool) -> Vec<Can
                         Param::new("capacity_j_per_k", 300.0, 0.01, 1.0e5, true)
                             .searched_past_grid()
                             .verified(Verification::Always),
-                    ));
+                    );
+                    // Softening on past 15 K, as rubber does (the seed's law is held
+                    // there): benchtruth case 2050's stage warms at a resonance until it
+                    // detunes ([`crate::effects::rubber_thermal::LINEAR_FLOOR`]).
+                    thermal
+                        .fixed
+                        .push(("softening", rubber_thermal::LINEAR_SOFTENING.to_string()));
+                    out.push(thermal);
                 }
                 out.push(add(
                     Effect::UnmodelledMode,

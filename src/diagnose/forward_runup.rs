@@ -129,8 +129,14 @@ pub fn predict_segment(
     // Only the first segment starts where nothing before it has settled the start; a later
     // one's lead-in on the ramp does that ([`super::settling::lead_s`]).
     let first = seg.from_s <= 0.0;
-    let options =
-        super::forward::run_options(run, max_order, from_rpm.max(to_rpm), seg.decay_s, first);
+    let options = super::forward::run_options(
+        model,
+        run,
+        max_order,
+        from_rpm.max(to_rpm),
+        seg.decay_s,
+        first,
+    );
     let sim = simulate(model, run_spec, options, &mut |_| true).map_err(|e| e.to_string())?;
     let rec = super::forward::station_recording(&sim, run, RecKind::RunUp)?;
     let pad = PAD_S.min(lead);

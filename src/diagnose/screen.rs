@@ -173,9 +173,10 @@ pub fn screen_one(
                      without drift), so the coupling does not warm enough to matter"
                 )));
             }
-            // A rubber stage warms up in the long runs and run-ups (the steady regimes are
-            // simulated for a few cycles only). The long run alone leaves its heat
-            // capacity loose (4700 J/K for 300 on the reference campaign). Searched from
+            // A rubber stage warms up most in the long runs and run-ups (a steady regime
+            // only in its hold, `forward.rs`'s `warm_hold_s`, a few seconds). The long run
+            // alone leaves its heat capacity loose (4700 J/K for 300 on the reference
+            // campaign). Searched from
             // the plain fit and from the user's values: the plain fit has taken the
             // warm stage's mean softening into its stiffness, and warming added on top of
             // that only harms (development case 2149: from the plain fit the search ended

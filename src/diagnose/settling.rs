@@ -23,7 +23,7 @@
 //! transient is below the amplitude floor the comparison allows anyway.
 
 use crate::modal::{damped_modes, modes};
-use crate::model::Model;
+use crate::model::{ConnectionKind, Model};
 use crate::physics::{OperatingPoint, System};
 use std::f64::consts::TAU;
 
@@ -84,6 +84,27 @@ pub fn min_settle_s(decay_s: Option<f64>) -> f64 {
     decay_s.map_or(0.0, |tau| (DECAYS * tau).clamp(0.0, MAX_LEAD_S))
 }
 
+/// Does `model` warm up in the time domain (a rubber stage with `thermal`)?
+pub fn warms_up(model: &Model) -> bool {
+    model
+        .connections
+        .iter()
+        .any(|c| matches!(&c.kind, ConnectionKind::Rubber(r) if r.thermal.is_some()))
+}
+
+/// How long a bench holds a run of `model` at `load` at its start speed before it
+/// records, its rubber warming, s ([`crate::transient::RunOptions::hold_s`]): the slowest
+/// mode's settling, [`min_settle_s`]; 0 when nothing warms (the hold then changes nothing
+/// a settled run records). One rule for the bench `torsim synth` plays and for the
+/// diagnosis' forward model, so that the two agree on a warming stage's start.
+pub fn bench_hold_s(model: &Model, load: f64) -> f64 {
+    if warms_up(model) {
+        min_settle_s(slowest_decay_s(model, load))
+    } else {
+        0.0
+    }
+}
+
 /// Lead-in of a run-up segment after the first: `DECAYS · decay_s` within
 /// `[MIN_LEAD_S, MAX_LEAD_S]` ([`MIN_LEAD_S`] when unknown).
 pub fn lead_s(decay_s: Option<f64>) -> f64 {
@@ -109,5 +130,20 @@ mod tests {
         assert_eq!(settle_s(Some(100.0), 6.0), MAX_SETTLE_S);
         assert_eq!(settle_s(Some(0.1), 6.0), 6.0);
         assert_eq!(settle_s(None, 6.0), 6.0);
+    }
+
+    /// A bench holds a run only when a stage warms, for the slowest mode's settling.
+    #[test]
+    fn a_bench_holds_only_a_warming_model() {
+        use crate::effects::{Effect, EffectSpec, build_truth};
+        use crate::model::{parse_model, presets};
+        let text = presets::preset("diagnosis-bench").expect("shipped").text;
+        let cold = parse_model(text, "bench.toml").unwrap();
+        assert_eq!(bench_hold_s(&cold, 1.0), 0.0);
+        let spec = EffectSpec::new(Effect::CouplingThermalDrift);
+        let warm = build_truth(&cold, &spec, 0.0, 0).unwrap().model;
+        let hold_s = bench_hold_s(&warm, 1.0);
+        assert!(hold_s > 0.0);
+        assert_eq!(hold_s, min_settle_s(slowest_decay_s(&warm, 1.0)));
     }
 }

@@ -39,6 +39,7 @@ pub mod param_error;
 pub mod rng;
 pub mod rubber;
 pub mod rubber_power;
+pub mod rubber_thermal;
 pub mod sensor;
 pub mod structure;
 pub mod truth;

@@ -1,14 +1,13 @@
-//! Effects on a rubber coupling stage (seed 000): amplitude nonlinearity (eq. 1),
-//! frequency dependence (eq. 9) and self-heating with temperature softening (eq. 10–11);
-//! each takes `connection=<name>`, by default the first rubber stage. Hysteretic damping in
-//! place of the user's viscous equivalent is in [`super::hysteretic`].
+//! Effects on a rubber coupling stage (seed 000): amplitude nonlinearity (eq. 1) and
+//! frequency dependence (eq. 9); each takes `connection=<name>`, by default the first
+//! rubber stage. Self-heating is in [`super::rubber_thermal`], hysteretic damping in place
+//! of the user's viscous equivalent in [`super::hysteretic`].
 
 use super::EffectError;
 use super::effect::{EffectSpec, Params};
 use super::truth::{Applied, mode_frequencies_hz};
 use crate::model::{
     AmplitudeForm, ConnectionKind, Model, Poly, RubberElements, RubberStage, RubberStiffness,
-    Thermal,
 };
 
 /// Seed 000 eq. 1: α_x(x) = 0.0152 x² + 0.0033 x + 1, x in mm.
@@ -30,10 +29,6 @@ pub const A2_MAX_PER_MM2: f64 = 1.0e4;
 pub const A1_MAX_PER_MM: f64 = 100.0;
 /// Seed 000 eq. 9: α_f(f) = −0.000023 f² + 0.01519 f + 1, f in Hz (measured 50–300 Hz).
 pub const SEED_FREQUENCY_POLY: [f64; 3] = [-0.000023, 0.01519, 1.0];
-/// Seed 000 eq. 10: α_Tc(T), T in °C (measured 25–55 °C).
-pub const SEED_TEMPERATURE_STIFFNESS_POLY: [f64; 3] = [0.000187, -0.02565, 1.530];
-/// Seed 000 eq. 11: α_Tξ(T), T in °C (measured 25–55 °C).
-pub const SEED_TEMPERATURE_DAMPING_POLY: [f64; 3] = [0.000063, -0.01275, 1.281];
 
 /// Index of the rubber stage `connection` names (default: the first rubber stage).
 pub(super) fn stage_index(model: &Model, p: &mut Params) -> Result<usize, EffectError> {
@@ -183,167 +178,4 @@ pub(crate) fn frequency(
         at(300.0)
     );
     Ok((p.resolved, summary))
-}
-
-/// A seed 000 temperature law moved so that `t0_c` sits where 40 °C (the middle of the
-/// measured 25–55 °C) sits in the seed's, normalised to 1 there, valid ±15 K around it.
-fn shifted_law(seed: [f64; 3], t0_c: f64) -> Poly {
-    let [a2, a1, a0] = seed;
-    let d = t0_c - 40.0;
-    let at40 = (a2 * 40.0 + a1) * 40.0 + a0;
-    Poly {
-        coeffs: [
-            a2 / at40,
-            (a1 - 2.0 * a2 * d) / at40,
-            (a2 * d * d - a1 * d + a0) / at40,
-        ],
-        range: Some([t0_c - 15.0, t0_c + 15.0]),
-    }
-}
-
-/// `coupling_thermal_drift`: the stage warms by its own loss into a lumped heat capacity
-/// (`capacity_j_per_k`, default 300 J/K: about 0.17 kg of loaded rubber; at least
-/// 0.01 J/K, for a small loss that warms visibly) and cools to `ambient_c` (default its
-/// start temperature) through `conductance_w_per_k` (default 1.5 W/K; time constant
-/// 200 s), or with the conductance that gives `time_constant_s` (capacity over
-/// conductance, s; the diagnosis reads it off a long run's drift, [`crate::diagnose`]'s
-/// thermal candidate). A stage without temperature laws gets seed
-/// 000 eq. 10–11 by [`shifted_law`]: −1.33 %/K in stiffness and −0.88 %/K in damping at
-/// the start.
-pub(crate) fn thermal(model: &mut Model, spec: &EffectSpec) -> Result<Applied, EffectError> {
-    let mut p = Params::new(
-        spec,
-        &[
-            "connection",
-            "capacity_j_per_k",
-            "conductance_w_per_k",
-            "time_constant_s",
-            "ambient_c",
-        ],
-    )?;
-    let j = stage_index(model, &mut p)?;
-    let capacity = p.number("capacity_j_per_k", 300.0, 0.01, 1.0e7)?;
-    let conductance = match p.optional_number("time_constant_s", 1e-2, 1e7)? {
-        Some(tau_s) => {
-            if spec.params.contains_key("conductance_w_per_k") {
-                return Err(p.bad(
-                    "time_constant_s",
-                    "give the conductance or the time constant, not both",
-                ));
-            }
-            capacity / tau_s
-        }
-        None => p.number("conductance_w_per_k", 1.5, 1.0e-3, 1.0e5)?,
-    };
-    let t0 = stage_mut(model, j)?.temperature_c;
-    let ambient = p.number("ambient_c", t0, -40.0, 200.0)?;
-    let stage = stage_mut(model, j)?;
-    if stage.thermal.is_some() {
-        return Err(p.bad("connection", "the stage already has thermal"));
-    }
-    stage.thermal = Some(Thermal {
-        capacity_j_per_k: capacity,
-        conductance_w_per_k: conductance,
-        ambient_c: ambient,
-    });
-    let mut added = Vec::new();
-    if stage.temperature_stiffness_poly.is_none() {
-        stage.temperature_stiffness_poly = Some(shifted_law(SEED_TEMPERATURE_STIFFNESS_POLY, t0));
-        added.push("α_Tc");
-    }
-    if stage.temperature_damping_poly.is_none() {
-        stage.temperature_damping_poly = Some(shifted_law(SEED_TEMPERATURE_DAMPING_POLY, t0));
-        added.push("α_Tξ");
-    }
-    let laws = if added.is_empty() {
-        "its own temperature laws".to_string()
-    } else {
-        format!(
-            "{} of seed 000 eq. 10–11 centred on {t0} °C",
-            added.join(" and ")
-        )
-    };
-    let summary = format!(
-        "rubber stage `{}` warms by its power loss (heat capacity {capacity} J/K, \
-         {conductance} W/K to {ambient} °C, time constant {:.0} s) from {t0} °C and softens \
-         by {laws}",
-        model.connections[j].name,
-        capacity / conductance
-    );
-    Ok((p.resolved, summary))
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn shifted_law_is_one_at_the_start_and_keeps_the_slope() {
-        let law = shifted_law(SEED_TEMPERATURE_STIFFNESS_POLY, 60.0);
-        assert!((law.eval(60.0) - 1.0).abs() < 1e-12);
-        // The seed's slope at 40 °C over its value there: −1.331 %/K.
-        let slope = law.derivative(60.0);
-        assert!((slope + 0.013_31).abs() < 1e-4, "{slope}");
-        let [a2, a1, a0] = SEED_TEMPERATURE_STIFFNESS_POLY;
-        let seed = |t: f64| (a2 * t + a1) * t + a0;
-        assert!((law.eval(70.0) - seed(50.0) / seed(40.0)).abs() < 1e-12);
-        assert_eq!(law.range, Some([45.0, 75.0]));
-    }
-
-    /// A time constant gives the conductance as capacity over it (600 J/K over 40 s:
-    /// 15 W/K); given beside a conductance it is refused, naming the key.
-    #[test]
-    fn a_time_constant_sets_the_conductance() {
-        use crate::effects::{Effect, EffectSpec, build_truth};
-        use crate::model::{parse_model, presets};
-        let text = presets::preset("diagnosis-bench").expect("shipped").text;
-        let user = parse_model(text, "bench.toml").unwrap();
-        let spec = EffectSpec::new(Effect::CouplingThermalDrift)
-            .with("capacity_j_per_k", 600.0)
-            .with("time_constant_s", 40.0);
-        let truth = build_truth(&user, &spec, 0.0, 0).unwrap();
-        let thermal = truth
-            .model
-            .connections
-            .iter()
-            .find_map(|c| match &c.kind {
-                crate::model::ConnectionKind::Rubber(r) => r.thermal.clone(),
-                _ => None,
-            })
-            .expect("a warming stage");
-        assert_eq!(thermal.capacity_j_per_k, 600.0);
-        assert_eq!(thermal.conductance_w_per_k, 15.0);
-        assert!(
-            truth.effect.summary.contains("time constant 40 s"),
-            "{}",
-            truth.effect.summary
-        );
-        let both = spec.with("conductance_w_per_k", 2.0);
-        let message = build_truth(&user, &both, 0.0, 0).unwrap_err().to_string();
-        assert!(message.contains("time_constant_s"), "{message}");
-    }
-
-    /// A capacity down to 0.01 J/K is accepted (the diagnosis fits 0.3 J/K on development
-    /// case 2149); below it, it is refused, naming the key.
-    #[test]
-    fn a_small_heat_capacity_is_accepted_down_to_its_bound() {
-        use crate::effects::{Effect, EffectSpec, build_truth};
-        use crate::model::{parse_model, presets};
-        let text = presets::preset("diagnosis-bench").expect("shipped").text;
-        let user = parse_model(text, "bench.toml").unwrap();
-        let spec =
-            |c: f64| EffectSpec::new(Effect::CouplingThermalDrift).with("capacity_j_per_k", c);
-        let truth = build_truth(&user, &spec(0.01), 0.0, 0).expect("at the bound");
-        let capacity = truth.model.connections.iter().find_map(|c| match &c.kind {
-            crate::model::ConnectionKind::Rubber(r) => {
-                r.thermal.as_ref().map(|t| t.capacity_j_per_k)
-            }
-            _ => None,
-        });
-        assert_eq!(capacity, Some(0.01));
-        let message = build_truth(&user, &spec(0.009), 0.0, 0)
-            .unwrap_err()
-            .to_string();
-        assert!(message.contains("capacity_j_per_k"), "{message}");
-    }
 }

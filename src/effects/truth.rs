@@ -1,13 +1,13 @@
 //! The truth: the user's model with plain parameter errors, then one effect added with
 //! physically sensible values ([`build_truth`]). The effects on rubber stages are in
-//! [`super::rubber`], those on the structure and the engine in
+//! [`super::rubber`] and [`super::rubber_thermal`], those on the structure and the engine in
 //! [`super::structure`]; a sensor artifact leaves the driveline alone and is
 //! carried to the measurement.
 
 use super::effect::{Effect, EffectSpec, ParamValue, Params};
 use super::param_error::{ParameterError, apply_random_errors, scale_parameter};
 use super::sensor::SensorArtifact;
-use super::{EffectError, backlash, hysteretic, rubber, structure};
+use super::{EffectError, backlash, hysteretic, rubber, rubber_thermal, structure};
 use crate::model::{ConnectionKind, Model, validate};
 use crate::physics::{OperatingPoint, System};
 
@@ -70,7 +70,7 @@ pub fn build_truth(
         Effect::ParameterError => parameter_error(&mut model, user, spec, &mut errors)?,
         Effect::CouplingAmplitudeNonlinearity => rubber::amplitude(&mut model, spec)?,
         Effect::CouplingFrequencyDependence => rubber::frequency(&mut model, user, spec)?,
-        Effect::CouplingThermalDrift => rubber::thermal(&mut model, spec)?,
+        Effect::CouplingThermalDrift => rubber_thermal::thermal(&mut model, spec)?,
         Effect::HystereticDamping => hysteretic::hysteretic(&mut model, user, spec)?,
         Effect::UnmodelledMode => structure::unmodelled_mode(&mut model, spec)?,
         Effect::CrankVariableInertia => structure::crank_inertia(&mut model, spec)?,

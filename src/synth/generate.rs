@@ -116,9 +116,12 @@ fn generate_run(
             Run::ramp(from, to_rpm + slope * margin_s, sim_duration)
         }
     };
+    // The bench holds every run at its start speed before it records, and a warming
+    // stage warms meanwhile: the rule the diagnosis' forward model assumes.
     let options = RunOptions {
         load: run.load,
         rate_hz: sim_rate,
+        hold_s: crate::diagnose::settling::bench_hold_s(model, run.load),
         ..RunOptions::default()
     };
     let sim = simulate(model, kind, options, &mut |f| progress(0.9 * f)).map_err(|e| {

@@ -11,7 +11,7 @@ use super::periodic_start::add_periodic_state;
 use super::plant::{Plant, PlantLaw, Temperature};
 use super::record::{Recorder, empty_simulation};
 use super::ros2::Ros2;
-use super::settle::{Course, SettleRule, Settling, settle};
+use super::settle::{Course, SettleRule, Settling, hold, settle};
 use super::speed::SpeedProfile;
 use super::start::initial_state;
 use super::stepper::{Method, Stepper, is_stiff};
@@ -44,6 +44,12 @@ pub struct RunOptions {
     /// measures noise (see [`crate::diagnose`]'s forward model, which settles for the
     /// slowest mode's decay).
     pub min_settle_s: f64,
+    /// Time the start speed is held after settling and before recording, s, with every
+    /// state free, a self-heating rubber's temperature too (default 0). Settling holds
+    /// the temperature; a bench holds a regime a while before it records, and a stage at
+    /// a resonance warms and detunes meanwhile (benchtruth case 2050: a stage losing
+    /// 1 kW at 1020 rpm). The recorded time starts after the hold.
+    pub hold_s: f64,
     /// Integrator (default: explicit unless the model is stiff).
     pub method: Method,
     /// Steps per working cycle at the run's highest speed that the integrator must take
@@ -71,6 +77,7 @@ impl Default for RunOptions {
             settle_tolerance: 1e-4,
             max_settle_s: 60.0,
             min_settle_s: 0.0,
+            hold_s: 0.0,
             method: Method::Auto,
             min_steps_per_cycle: 180.0,
             viscous_above_hz: None,
@@ -263,6 +270,9 @@ fn run_recorded(
         rule,
         &mut |f| observer(Event::Progress(f)),
     )?;
+    if options.hold_s > 0.0 {
+        hold(course, &mut mass, &mut solver, options.hold_s)?;
+    }
     let t0 = solver.t();
     if run.is_ramp() {
         profile = SpeedProfile::ramp(from_rpm, to_rpm, t0, duration_s);

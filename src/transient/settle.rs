@@ -1,7 +1,9 @@
 //! Settling before a recording: whole working cycles from the start state until the
 //! cycle-to-cycle change of the speeds is below tolerance, and for at least a set time
 //! ([`SettleRule::min_settle_s`]: the change sees a slowly decaying start transient only
-//! in part, a component with per-cycle multiplier μ changing by `|1 − μ|` of itself).
+//! in part, a component with per-cycle multiplier μ changing by `|1 − μ|` of itself),
+//! then, when asked, a hold at the start speed with every state free, the rubber's
+//! temperature too ([`hold`]).
 
 use super::TransientError;
 use super::budget::{StepBudget, check_state, name_collapse};
@@ -110,6 +112,33 @@ pub(super) fn settle(
         }
     }
     Ok(settling)
+}
+
+/// Holds the start speed for `hold_s` (s) after settling, every state free: a self-heating
+/// rubber warms meanwhile by its loss, as on a bench that holds a regime a while before
+/// it records ([`super::RunOptions::hold_s`]). Settling holds the temperature, so that
+/// the start does not depend on how long settling took; the hold is a set time.
+pub(super) fn hold(
+    course: Course,
+    mass: &mut [f64],
+    solver: &mut Stepper,
+    hold_s: f64,
+) -> Result<(), TransientError> {
+    let Course {
+        plant,
+        profile,
+        budget,
+    } = course;
+    let t_end = solver.t() + hold_s.max(0.0);
+    let mut rhs = |t: f64, y: &[f64], dy: &mut [f64]| plant.derivatives(t, y, dy, profile, mass);
+    while solver.t() < t_end - 1e-12 * t_end.max(1.0) {
+        solver
+            .step(t_end, &mut rhs)
+            .map_err(|e| name_collapse(plant, solver, e))?;
+        budget.check(plant, solver)?;
+        check_state(plant, solver.t(), solver.y(), profile)?;
+    }
+    Ok(())
 }
 
 /// The largest `|a_i − b_i|`.

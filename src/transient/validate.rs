@@ -57,6 +57,19 @@ pub fn check_run(model: &Model, run: Run, options: &RunOptions) -> Result<(), Tr
             options.rate_hz
         )));
     }
+    let hold_s = options.hold_s;
+    if !(hold_s.is_finite() && hold_s >= 0.0) {
+        return Err(TransientError::Model(format!(
+            "hold_s (--hold-s) = {hold_s} s: must be a finite number ≥ 0"
+        )));
+    }
+    // A hold costs what a recording of its length costs.
+    limits::check_count(
+        "hold: hold_s (--hold-s) × rate_hz (--rate-hz)",
+        hold_s * options.rate_hz,
+        limits.max_samples,
+        Some("--max-samples"),
+    )?;
     check_rtol(options.rtol, &limits)?;
     let top_rpm = speeds.iter().map(|s| s.1).fold(0.0, f64::max);
     check_rate(model, options.rate_hz, top_rpm)
