@@ -61,11 +61,7 @@ pub(super) fn settle(
     rule: SettleRule,
     progress: &mut dyn FnMut(f64) -> bool,
 ) -> Result<Settling, TransientError> {
-    let Course {
-        plant,
-        profile,
-        budget,
-    } = course;
+    let (plant, profile) = (course.plant, course.profile);
     let n = plant.n_dof;
     let held = plant.thermal_states();
     let mut rhs = |t: f64, y: &[f64], dy: &mut [f64]| {
@@ -86,11 +82,7 @@ pub(super) fn settle(
         let t_end = solver.t() + cycle_s;
         let mut peak: f64 = 0.0;
         while solver.t() < t_end - 1e-12 * t_end.max(1.0) {
-            solver
-                .step(t_end, &mut rhs)
-                .map_err(|e| name_collapse(plant, solver, e))?;
-            budget.check(plant, solver)?;
-            check_state(plant, solver.t(), solver.y(), profile)?;
+            checked_step(course, solver, t_end, &mut rhs)?;
             peak = solver.y()[n..2 * n]
                 .iter()
                 .fold(peak, |m, v| m.max(v.abs()));
@@ -124,21 +116,32 @@ pub(super) fn hold(
     solver: &mut Stepper,
     hold_s: f64,
 ) -> Result<(), TransientError> {
+    let (plant, profile) = (course.plant, course.profile);
+    let t_end = solver.t() + hold_s.max(0.0);
+    let mut rhs = |t: f64, y: &[f64], dy: &mut [f64]| plant.derivatives(t, y, dy, profile, mass);
+    while solver.t() < t_end - 1e-12 * t_end.max(1.0) {
+        checked_step(course, solver, t_end, &mut rhs)?;
+    }
+    Ok(())
+}
+
+/// One step of `solver` towards `t_end`, then its step budget and its state checked.
+fn checked_step<F: FnMut(f64, &[f64], &mut [f64])>(
+    course: Course,
+    solver: &mut Stepper,
+    t_end: f64,
+    rhs: &mut F,
+) -> Result<(), TransientError> {
     let Course {
         plant,
         profile,
         budget,
     } = course;
-    let t_end = solver.t() + hold_s.max(0.0);
-    let mut rhs = |t: f64, y: &[f64], dy: &mut [f64]| plant.derivatives(t, y, dy, profile, mass);
-    while solver.t() < t_end - 1e-12 * t_end.max(1.0) {
-        solver
-            .step(t_end, &mut rhs)
-            .map_err(|e| name_collapse(plant, solver, e))?;
-        budget.check(plant, solver)?;
-        check_state(plant, solver.t(), solver.y(), profile)?;
-    }
-    Ok(())
+    solver
+        .step(t_end, rhs)
+        .map_err(|e| name_collapse(plant, solver, e))?;
+    budget.check(plant, solver)?;
+    check_state(plant, solver.t(), solver.y(), profile)
 }
 
 /// The largest `|a_i − b_i|`.
