@@ -32,12 +32,20 @@ pub const LINEAR_SOFTENING: &str = "linear";
 /// on, detuned within a second to 30 W.
 pub const LINEAR_FLOOR: f64 = 0.3;
 
+/// A seed 000 temperature law's value at 40 °C (the middle of its measured 25–55 °C) and
+/// its slope there over that value, 1/K.
+fn at_40(seed: [f64; 3]) -> (f64, f64) {
+    let [a2, a1, a0] = seed;
+    let value = (a2 * 40.0 + a1) * 40.0 + a0;
+    (value, (2.0 * a2 * 40.0 + a1) / value)
+}
+
 /// A seed 000 temperature law moved so that `t0_c` sits where 40 °C (the middle of the
 /// measured 25–55 °C) sits in the seed's, normalised to 1 there, valid ±15 K around it.
 fn shifted_law(seed: [f64; 3], t0_c: f64) -> Poly {
     let [a2, a1, a0] = seed;
     let d = t0_c - 40.0;
-    let at40 = (a2 * 40.0 + a1) * 40.0 + a0;
+    let (at40, _) = at_40(seed);
     Poly {
         coeffs: [
             a2 / at40,
@@ -52,9 +60,7 @@ fn shifted_law(seed: [f64; 3], t0_c: f64) -> Poly {
 /// measured 25–55 °C), as a straight line through 1 at `t0_c`, held from `hot_k` above it
 /// (and 15 K below it).
 fn linear_law(seed: [f64; 3], t0_c: f64, hot_k: f64) -> Poly {
-    let [a2, a1, a0] = seed;
-    let at40 = (a2 * 40.0 + a1) * 40.0 + a0;
-    let slope_per_k = (2.0 * a2 * 40.0 + a1) / at40;
+    let (_, slope_per_k) = at_40(seed);
     Poly {
         coeffs: [0.0, slope_per_k, 1.0 - slope_per_k * t0_c],
         range: Some([t0_c - 15.0, t0_c + hot_k]),
@@ -64,8 +70,7 @@ fn linear_law(seed: [f64; 3], t0_c: f64, hot_k: f64) -> Poly {
 /// Warming above the start at which the `linear` stiffness law reaches [`LINEAR_FLOOR`], K
 /// (52.6 K at −1.331 %/K); the damping law is held from there too.
 fn linear_hot_k() -> f64 {
-    let [a2, a1, a0] = SEED_TEMPERATURE_STIFFNESS_POLY;
-    let slope_per_k = (2.0 * a2 * 40.0 + a1) / ((a2 * 40.0 + a1) * 40.0 + a0);
+    let (_, slope_per_k) = at_40(SEED_TEMPERATURE_STIFFNESS_POLY);
     (1.0 - LINEAR_FLOOR) / -slope_per_k
 }
 

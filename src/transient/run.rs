@@ -3,7 +3,7 @@
 //! output rate (a steady speed for a duration, or a linear speed ramp).
 
 use super::TransientError;
-use super::budget::{StepBudget, bound_thermal_time_constants, check_state, name_collapse};
+use super::budget::{StepBudget, bound_thermal_time_constants};
 use super::dopri::Dopri5;
 use super::exact::Exact;
 use super::observe::{Event, take_chunk};
@@ -11,7 +11,7 @@ use super::periodic_start::add_periodic_state;
 use super::plant::{Plant, PlantLaw, Temperature};
 use super::record::{Recorder, empty_simulation};
 use super::ros2::Ros2;
-use super::settle::{Course, SettleRule, Settling, hold, settle};
+use super::settle::{Course, SettleRule, Settling, checked_step, hold, settle};
 use super::speed::SpeedProfile;
 use super::start::initial_state;
 use super::stepper::{Method, Stepper, is_stiff};
@@ -290,15 +290,16 @@ fn run_recorded(
     let mut reported = 0;
     while next < samples {
         {
+            let course = Course {
+                plant: &plant,
+                profile: &profile,
+                budget: &budget,
+            };
             let mut rhs = |t: f64, y: &[f64], dy: &mut [f64]| {
                 plant.derivatives(t, y, dy, &profile, &mut mass)
             };
-            solver
-                .step(t_end + 1.0 / options.rate_hz, &mut rhs)
-                .map_err(|e| name_collapse(&plant, &solver, e))?;
+            checked_step(course, &mut solver, t_end + 1.0 / options.rate_hz, &mut rhs)?;
         }
-        budget.check(&plant, &solver)?;
-        check_state(&plant, solver.t(), solver.y(), &profile)?;
         while next < samples {
             let since_start = next as f64 / options.rate_hz;
             let t = t0 + since_start;

@@ -125,8 +125,9 @@ pub(super) fn hold(
     Ok(())
 }
 
-/// One step of `solver` towards `t_end`, then its step budget and its state checked.
-fn checked_step<F: FnMut(f64, &[f64], &mut [f64])>(
+/// One step of `solver` towards `t_end`, then its step budget and its state checked (the
+/// settling, the hold and the recording step so).
+pub(super) fn checked_step<F: FnMut(f64, &[f64], &mut [f64])>(
     course: Course,
     solver: &mut Stepper,
     t_end: f64,
