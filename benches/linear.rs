@@ -50,6 +50,7 @@ fn rubber(from: &str, to: &str, k: f64, psi: f64, frequency_poly: Option<Poly>) 
             amplitude_form: Default::default(),
             frequency_poly,
             frequency_power_law: None,
+            frequency_zener: None,
             temperature_stiffness_poly: None,
             temperature_damping_poly: None,
             thermal: None,

@@ -10,6 +10,7 @@
 //! | `coupling_amplitude_nonlinearity` (`elastic_linear`: `a2` = 0) | rubber stage | `a1` (per mm), in the time domain | 10 % stiffening at the static twist |
 //! | `coupling_frequency_dependence` | rubber stage | `scale` of seed 000 eq. 9 | 0.1 |
 //! | `coupling_frequency_dependence` (`form = power_law`) | rubber stage | `exponent` of a causal power law (loss tan(nπ/2)) | 0.05 |
+//! | `coupling_frequency_dependence` (`form = zener`, at 1.5× and 4× the first mode) | rubber stage | relaxation strength `delta` of a fractional Zener law (α = 0.5) | 0.3 |
 //! | `coupling_thermal_drift` | rubber stage, with a long run | `capacity_j_per_k` (eq. 10–11) | 300 |
 //! | `coupling_thermal_drift` (`time_constant_s`, [`super::drift::with_time_constant`]) | the same | `capacity_j_per_k`, the conductance the capacity over the long run's time constant | 300 |
 //! | `hysteretic_damping` | spring with a viscous damper | `reference_hz` where ψ matches | 50 |
@@ -25,6 +26,7 @@ use super::param::{Param, Verification};
 use super::sensor::{ArtifactForm, TapeJoint};
 use crate::effects::rubber_power as power;
 use crate::effects::rubber_thermal;
+use crate::effects::rubber_zener as zener;
 use crate::effects::{Effect, EffectSpec, build_truth};
 use crate::model::{ConnectionKind, Model};
 use std::sync::Arc;
@@ -48,10 +50,15 @@ impl Candidate {
     pub fn name(&self) -> String {
         // A sensor artifact's `kind` and a frequency law's `form` tell the rows of one
         // place apart (a branch's place is its node, one row per node already).
+        let relax = self
+            .fixed
+            .iter()
+            .find(|(k, _)| *k == "relax_ratio")
+            .map_or(String::new(), |(_, r)| format!(", relaxing at {r}× mode 1"));
         let kind = self
             .form()
             .filter(|f| *f != "branch")
-            .map_or(String::new(), |v| format!(" ({v})"));
+            .map_or(String::new(), |v| format!(" ({v}{relax})"));
         match self.fixed.first() {
             Some((_, v)) => format!("{} at {v}{kind}", self.effect),
             None => self.effect.to_string(),
@@ -152,6 +159,15 @@ pub fn candidates(model: &Model, stations: &[String], long_run: bool) -> Vec<Can
                 );
                 causal.fixed.push(("form", power::FORM.to_string()));
                 out.push(causal);
+                for ratio in zener::RELAX_RATIOS {
+                    let mut relaxing = add(
+                        Effect::CouplingFrequencyDependence,
+                        Param::new("delta", 0.3, 0.0, 3.0, false).absent_at(0.0),
+                    );
+                    relaxing.fixed.push(("form", zener::FORM.to_string()));
+                    relaxing.fixed.push(("relax_ratio", format!("{ratio}")));
+                    out.push(relaxing);
+                }
                 if long_run {
                     let mut thermal = add(
                         Effect::CouplingThermalDrift,
@@ -261,8 +277,9 @@ mod tests {
     use super::*;
     use crate::model::{parse_model, presets};
 
-    /// Each rubber stage has both forms of the frequency law; the causal one names its
-    /// form and puts the fitted exponent on the stage.
+    /// Each rubber stage has the three forms of the frequency law (the Zener one at two
+    /// relaxation frequencies); the causal ones name their form and put the fitted
+    /// exponent or relaxation strength on the stage.
     #[test]
     fn a_rubber_stage_has_the_causal_power_law() {
         let text = presets::preset("diagnosis-bench").expect("shipped").text;
@@ -272,7 +289,7 @@ mod tests {
             .iter()
             .filter(|c| c.effect == Effect::CouplingFrequencyDependence)
             .collect();
-        assert_eq!(forms.len(), 2);
+        assert_eq!(forms.len(), 4);
         let causal = forms.iter().find(|c| c.param.key == "exponent").unwrap();
         assert_eq!(
             causal.name(),
@@ -281,6 +298,31 @@ mod tests {
         let (with, _) = causal.apply(&model, 0.1).unwrap();
         let law = crate::model::frequency_law::first_power_law(&with).unwrap();
         assert_eq!(law.exponent, 0.1);
+        let first_hz = crate::effects::truth::mode_frequencies_hz(&model).unwrap()[0];
+        let zeners: Vec<&&Candidate> = forms.iter().filter(|c| c.param.key == "delta").collect();
+        assert_eq!(zeners.len(), zener::RELAX_RATIOS.len());
+        for (c, ratio) in zeners.iter().zip(zener::RELAX_RATIOS) {
+            assert_eq!(
+                c.name(),
+                format!(
+                    "coupling_frequency_dependence at coupling (zener, relaxing at {ratio}× mode 1)"
+                )
+            );
+            assert_eq!(c.form(), Some(zener::FORM));
+            let (with, _) = c.apply(&model, 0.4).unwrap();
+            let law = with
+                .connections
+                .iter()
+                .find_map(|k| match &k.kind {
+                    ConnectionKind::Rubber(r) => r.frequency_zener,
+                    _ => None,
+                })
+                .unwrap();
+            assert_eq!(law.delta, 0.4);
+            assert!((law.relax_hz - ratio * first_hz).abs() < 1e-9 * first_hz);
+        }
+        // Absent at Δ = 0, as the own-gain check needs.
+        assert!(zeners.iter().all(|c| c.param.absent_at == Some(0.0)));
     }
 
     /// An effect at its absence is no effect: a weak cylinder at 1.0001 of the others'

@@ -69,14 +69,21 @@ pub fn effect_sentence(effect: &str, p: &BTreeMap<String, ParameterValue>) -> St
                 stage(p)
             )
         }
-        "coupling_frequency_dependence" => match number(p, "exponent") {
-            Some(n) => format!(
+        "coupling_frequency_dependence" => match (number(p, "exponent"), number(p, "delta")) {
+            (_, Some(d)) => format!(
+                "The rubber of {} relaxes with vibration frequency: it stiffens by {} % from \
+                 rest to high frequency across an S-curve about {} Hz, and loses most there.",
+                stage(p),
+                sig(100.0 * d),
+                number(p, "relax_hz").map_or("?".into(), sig)
+            ),
+            (Some(n), None) => format!(
                 "The rubber of {} is stiffer at higher vibration frequencies than its \
                  catalogue value says: stiffness grows as f^{} (and its loss with it).",
                 stage(p),
                 sig(n)
             ),
-            None => format!(
+            (None, None) => format!(
                 "The rubber of {} is stiffer at higher vibration frequencies than its \
                  catalogue value says.",
                 stage(p)

@@ -87,6 +87,7 @@ pub(crate) fn hysteretic(
         amplitude_form: Default::default(),
         frequency_poly: None,
         frequency_power_law: None,
+        frequency_zener: None,
         temperature_stiffness_poly: None,
         temperature_damping_poly: None,
         thermal: None,

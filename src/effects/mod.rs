@@ -10,6 +10,7 @@
 //! | [`truth`] | [`build_truth`]: the user's model with parameter errors and one effect added |
 //! | [`rubber`] | rubber-stage effects: amplitude nonlinearity, frequency dependence, thermal drift |
 //! | [`rubber_power`] | frequency dependence as a causal power law (`form = power_law`) |
+//! | [`rubber_zener`] | frequency dependence as a fractional Zener law (`form = zener`) |
 //! | [`branch`] | unmodelled mode, branch form: a local mode hanging on any node |
 //! | [`hysteretic`] | rate-independent (hysteretic) damping in place of a viscous equivalent |
 //! | [`structure`] | structure and engine: unmodelled mode, variable crank inertia, imbalance |
@@ -40,6 +41,7 @@ pub mod rng;
 pub mod rubber;
 pub mod rubber_power;
 pub mod rubber_thermal;
+pub mod rubber_zener;
 pub mod sensor;
 pub mod structure;
 pub mod truth;

@@ -61,6 +61,24 @@ pub(super) fn stage_mut(model: &mut Model, j: usize) -> Result<&mut RubberStage,
     }
 }
 
+/// Stage `j` of `model`, for a frequency law to be put on it: refused, naming parameter
+/// `connection`, when it has one already (`frequency_poly`, `frequency_power_law` or
+/// `frequency_zener`; the model allows one).
+pub(super) fn stage_without_frequency_law<'m>(
+    model: &'m mut Model,
+    j: usize,
+    p: &Params,
+) -> Result<&'m mut RubberStage, EffectError> {
+    let stage = stage_mut(model, j)?;
+    if stage.frequency_poly.is_some()
+        || stage.frequency_power_law.is_some()
+        || stage.frequency_zener.is_some()
+    {
+        return Err(p.bad("connection", "the stage already has a frequency law"));
+    }
+    Ok(stage)
+}
+
 /// `coupling_amplitude_nonlinearity`: α_x(x) = a2·x² + a1·x + 1 (default seed 000 eq. 1),
 /// on the whole stage (`form = whole`, default: the damping scales with it, eq. 13–15) or
 /// on its elastic spring only (`form = elastic`, [`AmplitudeForm::Elastic`]).
@@ -127,7 +145,8 @@ pub(crate) fn amplitude(model: &mut Model, spec: &EffectSpec) -> Result<Applied,
 /// (default 0.1) about `reference_hz`, where it equals the user's stiffness (default: the
 /// user model's first mode, the frequency a user would have tuned the stiffness to):
 /// `α_f(f) = 1 + scale·(g(f) − g(f_ref))`, g eq. 9, held beyond its measured 300 Hz.
-/// `form` is `poly` (this, the default) or `power_law` ([`super::rubber_power`]).
+/// `form` is `poly` (this, the default), `power_law` ([`super::rubber_power`]) or `zener`
+/// ([`super::rubber_zener`]).
 pub(crate) fn frequency(
     model: &mut Model,
     user: &Model,
@@ -138,10 +157,13 @@ pub(crate) fn frequency(
         if form == Some(super::rubber_power::FORM) {
             return super::rubber_power::power_law(model, user, spec);
         }
+        if form == Some(super::rubber_zener::FORM) {
+            return super::rubber_zener::zener(model, user, spec);
+        }
         if form != Some("poly") {
             return Err(EffectError::Input(format!(
                 "effect `coupling_frequency_dependence`, parameter `form`: `{}`: expected \
-                 poly or power_law",
+                 poly, power_law or zener",
                 form.unwrap_or_default()
             )));
         }
@@ -160,10 +182,7 @@ pub(crate) fn frequency(
     if coeffs[2] <= 0.0 {
         return Err(p.bad("scale", "makes the static stiffness ≤ 0"));
     }
-    let stage = stage_mut(model, j)?;
-    if stage.frequency_poly.is_some() {
-        return Err(p.bad("connection", "the stage already has frequency_poly"));
-    }
+    let stage = stage_without_frequency_law(model, j, &p)?;
     stage.frequency_poly = Some(Poly {
         coeffs,
         range: Some([0.0, 300.0]),

@@ -6,7 +6,7 @@
 
 use super::EffectError;
 use super::effect::{EffectSpec, Params};
-use super::rubber::{stage_index, stage_mut};
+use super::rubber::{stage_index, stage_without_frequency_law};
 use super::truth::{Applied, mode_frequencies_hz};
 use crate::model::{Model, PowerLaw};
 
@@ -35,10 +35,7 @@ pub(crate) fn power_law(
         exponent,
         reference_hz,
     };
-    let stage = stage_mut(model, j)?;
-    if stage.frequency_poly.is_some() || stage.frequency_power_law.is_some() {
-        return Err(p.bad("connection", "the stage already has a frequency law"));
-    }
+    let stage = stage_without_frequency_law(model, j, &p)?;
     stage.frequency_power_law = Some(law);
     let summary = format!(
         "rubber stage `{}` follows a causal power law: storage stiffness × (f/{reference_hz:.1} \

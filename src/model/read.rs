@@ -14,7 +14,7 @@ use super::read_sections::{engine, expect, harmonic, load, operation};
 use super::spanned::Tab;
 use super::{
     AmplitudeForm, Connection, ConnectionKind, Expect, Gear, Inertia, Model, Operation, Poly,
-    PowerLaw, RubberElements, RubberStage, RubberStiffness, Shaft, Thermal,
+    PowerLaw, RubberElements, RubberStage, RubberStiffness, Shaft, Thermal, ZenerLaw,
 };
 use super::{ModelError, validate};
 
@@ -186,6 +186,7 @@ fn connection(t: &Tab) -> Result<Connection, ModelError> {
                 "frequency_poly",
                 "frequency_poly_range",
                 "frequency_power_law",
+                "frequency_zener",
                 "temperature_stiffness_poly",
                 "temperature_stiffness_poly_range",
                 "temperature_damping_poly",
@@ -282,6 +283,18 @@ fn rubber(t: &Tab) -> Result<ConnectionKind, ModelError> {
             })
         }
     };
+    let frequency_zener = match t.opt_table("frequency_zener")? {
+        None => None,
+        Some(h) => {
+            h.allow(&["delta", "alpha", "relax_hz", "reference_hz"])?;
+            Some(ZenerLaw {
+                delta: h.f64("delta")?,
+                alpha: h.f64("alpha")?,
+                relax_hz: h.f64("relax_hz")?,
+                reference_hz: h.f64("reference_hz")?,
+            })
+        }
+    };
     let amplitude_form = match t.opt_str("amplitude_form")? {
         None => AmplitudeForm::default(),
         Some(key) => AmplitudeForm::from_key(&key).ok_or_else(|| {
@@ -299,6 +312,7 @@ fn rubber(t: &Tab) -> Result<ConnectionKind, ModelError> {
         amplitude_form,
         frequency_poly: frequency?,
         frequency_power_law,
+        frequency_zener,
         temperature_stiffness_poly: temp_k?,
         temperature_damping_poly: temp_d?,
         thermal,

@@ -139,7 +139,8 @@ pub struct RubberState {
     /// about the twist sees.
     pub tangent_stiffness_nm_per_rad: f64,
     /// Loss factor `ξ_T = ψ/2π · α_Tξ` (eq. 15); with a `frequency_power_law`, at least
-    /// its `tan(nπ/2)` ([`super::frequency_law`]).
+    /// its `tan(nπ/2)` ([`super::frequency_law`]); with a `frequency_zener`, its loss at
+    /// the frequency (at its reference when static, [`super::frequency_zener`]).
     pub loss_factor: f64,
     /// Relative damping at the temperature, `ψ_T = 2π·ξ_T`.
     pub psi: f64,
@@ -184,13 +185,32 @@ fn factor(poly: Option<&Poly>, which: Factor, x: f64, warnings: &mut Vec<RangeWa
 
 impl RubberStage {
     /// The stiffness factor at vibration frequency `frequency_hz`: the causal power law's
-    /// storage ratio when the stage has one, else α_f (seed 000 eq. 9), else 1.
+    /// or Zener law's storage ratio when the stage has one, else α_f (seed 000 eq. 9),
+    /// else 1.
     pub fn frequency_factor(&self, frequency_hz: f64) -> f64 {
+        if let Some(law) = &self.frequency_zener {
+            return law.storage(frequency_hz);
+        }
         match (&self.frequency_power_law, &self.frequency_poly) {
             (Some(law), _) => law.storage(frequency_hz),
             (None, Some(p)) => p.eval(frequency_hz),
             (None, None) => 1.0,
         }
+    }
+
+    /// The loss factor at vibration frequency `frequency_hz` (`None`: at the law's
+    /// reference) when the catalogue's, with its temperature factor, is
+    /// `catalogue_loss_factor`: at least a power law's `tan(nπ/2)`, with a Zener law's own
+    /// loss added ([`super::frequency_law`], [`super::frequency_zener`]), else the
+    /// catalogue's.
+    pub fn loss_factor_at(&self, frequency_hz: Option<f64>, catalogue_loss_factor: f64) -> f64 {
+        if let Some(law) = &self.frequency_zener {
+            let f = frequency_hz.unwrap_or(law.reference_hz);
+            return law.loss_factor(f, catalogue_loss_factor);
+        }
+        self.frequency_power_law.map_or(catalogue_loss_factor, |l| {
+            l.loss_factor(catalogue_loss_factor)
+        })
     }
 
     /// Static torsional stiffness at 25 °C, N·m/rad (given, or seed 000 eq. 12).
@@ -235,6 +255,7 @@ impl RubberStage {
             _ => (1.0, 1.0),
         };
         let alpha_f = match (frequency_hz, &self.frequency_power_law) {
+            (Some(f), _) if self.frequency_zener.is_some() => self.frequency_factor(f),
             (Some(f), Some(law)) => law.storage(f),
             (Some(f), None) => factor(
                 self.frequency_poly.as_ref(),
@@ -258,9 +279,7 @@ impl RubberStage {
         );
         let k0 = self.static_stiffness_nm_per_rad();
         let catalogue = self.psi / (2.0 * std::f64::consts::PI) * alpha_txi;
-        let loss_factor = self
-            .frequency_power_law
-            .map_or(catalogue, |l| l.loss_factor(catalogue));
+        let loss_factor = self.loss_factor_at(frequency_hz, catalogue);
         RubberState {
             static_stiffness_nm_per_rad: k0,
             alpha_x,

@@ -195,6 +195,10 @@ pub struct RubberStage {
     /// A causal power law in place of `frequency_poly` (issue 14,
     /// [`super::frequency_law`]): storage `(f/f_ref)^n`, loss factor `max(ψ/2π, tan(nπ/2))`.
     pub frequency_power_law: Option<super::PowerLaw>,
+    /// A fractional Zener law in place of `frequency_poly` (issue 14,
+    /// [`super::frequency_zener`]): an S-curve from the rubbery to `1 + Δ` times its
+    /// stiffness, with the loss Kramers–Kronig ties to it.
+    pub frequency_zener: Option<super::ZenerLaw>,
     /// α_Tc(T), T in °C (seed 000 eq. 10).
     pub temperature_stiffness_poly: Option<Poly>,
     /// α_Tξ(T), T in °C (seed 000 eq. 11).

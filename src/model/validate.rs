@@ -277,6 +277,17 @@ fn rubber(key: &str, r: &RubberStage) -> Check {
             )?;
         }
     }
+    if let Some(law) = &r.frequency_zener {
+        if let Some(why) = law.problem() {
+            fail(k("frequency_zener"), why)?;
+        }
+        if r.frequency_poly.is_some() || r.frequency_power_law.is_some() {
+            fail(
+                k("frequency_zener"),
+                "give one of `frequency_poly`, `frequency_power_law` and `frequency_zener`",
+            )?;
+        }
+    }
     if let Some((sub, why)) = r.rating.as_ref().and_then(|rt| rt.problem()) {
         fail(k(&format!("rating.{sub}")), why)?;
     }

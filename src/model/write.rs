@@ -191,6 +191,15 @@ fn rubber(out: &mut String, r: &RubberStage) {
         ];
         kv(out, "frequency_power_law", inline(&fields));
     }
+    if let Some(law) = &r.frequency_zener {
+        let fields = [
+            ("delta", num(law.delta)),
+            ("alpha", num(law.alpha)),
+            ("relax_hz", num(law.relax_hz)),
+            ("reference_hz", num(law.reference_hz)),
+        ];
+        kv(out, "frequency_zener", inline(&fields));
+    }
     if r.amplitude_form != AmplitudeForm::default() {
         kv(out, "amplitude_form", string(r.amplitude_form.key()));
     }

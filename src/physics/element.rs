@@ -2,7 +2,7 @@
 //! stage becomes one — linearized at its static twist (seed 000 eq. 1–2, 13, 15).
 
 use super::error::PhysicsError;
-use crate::model::{AmplitudeForm, Poly, PowerLaw, RubberStage};
+use crate::model::{AmplitudeForm, Poly, PowerLaw, RubberStage, ZenerLaw};
 
 /// How an element's stiffness behaves.
 #[derive(Debug, Clone, PartialEq)]
@@ -27,7 +27,11 @@ pub enum ElementLaw {
         frequency_poly: Option<Poly>,
         /// A causal power law in place of α_f (its loss is in `loss_factor` already).
         frequency_power_law: Option<PowerLaw>,
-        /// Loss factor `ξ_T = ψ/2π·α_Tξ` of the part `base·α_f`.
+        /// A fractional Zener law in place of α_f; its loss at each frequency follows from
+        /// `loss_factor`, then the catalogue's ([`crate::model::frequency_zener`]).
+        frequency_zener: Option<ZenerLaw>,
+        /// Loss factor `ξ_T = ψ/2π·α_Tξ` of the part `base·α_f` (with a Zener law, its
+        /// rate-independent part, to which the law's own is added).
         loss_factor: f64,
         /// Referred stiffness added without loss or frequency dependence, N·m/rad: the
         /// stiffening of the equilibrium spring of an `amplitude_form = "elastic"` stage,
@@ -82,17 +86,26 @@ impl Element {
                 base_stiffness_nm_per_rad,
                 frequency_poly,
                 frequency_power_law,
+                frequency_zener,
                 loss_factor,
                 elastic_nm_per_rad,
             } => {
-                let alpha_f = match (frequency_power_law, frequency_poly) {
-                    (Some(law), _) => law.storage(frequency_hz),
-                    (None, Some(p)) => p.eval(frequency_hz),
-                    (None, None) => 1.0,
+                let (alpha_f, loss_factor) = match (frequency_zener, frequency_power_law) {
+                    (Some(z), _) => (
+                        z.storage(frequency_hz),
+                        z.loss_factor(frequency_hz, *loss_factor),
+                    ),
+                    (None, Some(law)) => (law.storage(frequency_hz), *loss_factor),
+                    (None, None) => (
+                        frequency_poly
+                            .as_ref()
+                            .map_or(1.0, |p| p.eval(frequency_hz)),
+                        *loss_factor,
+                    ),
                 };
                 let lossy = base_stiffness_nm_per_rad * alpha_f;
                 if *elastic_nm_per_rad == 0.0 {
-                    return (lossy, *loss_factor);
+                    return (lossy, loss_factor);
                 }
                 with_elastic(lossy, lossy * loss_factor, *elastic_nm_per_rad)
             }
@@ -150,6 +163,9 @@ impl Element {
                 ..
             } | ElementLaw::Rubber {
                 frequency_power_law: Some(_),
+                ..
+            } | ElementLaw::Rubber {
+                frequency_zener: Some(_),
                 ..
             } | ElementLaw::Causal { .. }
         )
@@ -209,11 +225,7 @@ pub(super) fn rubber_law(
         // The equilibrium spring k∞ = α_f(0) alone stiffens (as in the time domain).
         AmplitudeForm::Elastic => {
             let base = tangent / state.alpha_x_tangent;
-            let k_inf = match (&stage.frequency_power_law, &stage.frequency_poly) {
-                (Some(law), _) => law.storage(0.0),
-                (None, Some(p)) => p.eval(0.0),
-                (None, None) => 1.0,
-            };
+            let k_inf = stage.frequency_factor(0.0);
             (base, base * (state.alpha_x_tangent - 1.0) * k_inf)
         }
     };
@@ -222,7 +234,11 @@ pub(super) fn rubber_law(
             base_stiffness_nm_per_rad: base,
             frequency_poly: stage.frequency_poly.clone(),
             frequency_power_law: stage.frequency_power_law,
-            loss_factor: state.loss_factor,
+            frequency_zener: stage.frequency_zener,
+            loss_factor: match stage.frequency_zener {
+                Some(_) => stage.psi / std::f64::consts::TAU * state.alpha_txi,
+                None => state.loss_factor,
+            },
             elastic_nm_per_rad: elastic,
         },
         twist,
@@ -295,6 +311,7 @@ mod tests {
             amplitude_form: form,
             frequency_poly: None,
             frequency_power_law: None,
+            frequency_zener: None,
             temperature_stiffness_poly: None,
             temperature_damping_poly: None,
             thermal: None,

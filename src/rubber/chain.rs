@@ -10,7 +10,9 @@
 //!
 //! The target is seed 000's law `α_f(f)·(1 + iξ0)`, `ξ0 = ψ/2π·α_Tξ(T0)` at the stage's
 //! `temperature_c` (eq. 9, 11, 13–15), or a causal power law
-//! `(f/f_ref)^n·(1 + i·max(ξ0, tan(nπ/2)))` ([`crate::model::frequency_law`]).
+//! `(f/f_ref)^n·(1 + i·max(ξ0, tan(nπ/2)))` ([`crate::model::frequency_law`]), or a
+//! fractional Zener law, whose loss factor varies with frequency
+//! ([`crate::model::frequency_zener`]).
 //! Rows of the non-negative least squares, all as relative errors:
 //! - the band, [`SAMPLES_PER_DECADE`] frequencies per decade; storage rows weigh
 //!   [`STIFFNESS_WEIGHT`] × the loss rows (storage places the resonances);
@@ -96,7 +98,14 @@ impl MaxwellChain {
         // The nominal loss factor at the stage's own temperature, ξ_T = ψ/2π·α_Tξ(T0)
         // (eq. 11, 15; a power law's tan(nπ/2) if larger): the chain meets the law there,
         // and its arms scale by α_Tξ(T)/α_Tξ(T0) at other temperatures.
-        let xi0 = stage.state(None, stage.temperature_c, 0.0).loss_factor;
+        // A Zener law's loss varies with frequency ([`crate::model::frequency_zener`]);
+        // every other law's is `xi0` at every frequency.
+        let state = stage.state(None, stage.temperature_c, 0.0);
+        let catalogue = stage.psi / TAU * state.alpha_txi;
+        let xi_at = |f: f64| match stage.frequency_zener {
+            Some(_) => stage.loss_factor_at(Some(f), catalogue),
+            None => state.loss_factor,
+        };
         let alpha_f = |f: f64| stage.frequency_factor(f);
         let modes: Vec<ModeTarget> = modes
             .iter()
@@ -108,8 +117,10 @@ impl MaxwellChain {
         let lowest = modes.iter().map(|m| m.frequency_hz).fold(lo, f64::min);
         let (arm_lo, arm_hi) = (lowest / 1.5, hi * 1.5);
         let static_stiffness = match stage.frequency_power_law {
-            Some(law) => law.storage(arm_lo / PLATEAU_BELOW_ARMS),
-            None => alpha_f(0.0),
+            Some(law) if stage.frequency_zener.is_none() => {
+                law.storage(arm_lo / PLATEAU_BELOW_ARMS)
+            }
+            _ => alpha_f(0.0),
         };
         let n_arms = ((arm_hi / arm_lo).log10() * ARMS_PER_DECADE).ceil() as usize + 1;
         let taus: Vec<f64> = log_space(arm_lo, arm_hi, n_arms)
@@ -132,6 +143,7 @@ impl MaxwellChain {
         let mut b = DVector::<f64>::zeros(2 * rows.len() + 1);
         for (s, &(f, weight)) in rows.iter().enumerate() {
             let target = alpha_f(f);
+            let xi0 = xi_at(f);
             let (ws, wl) = (weight * STIFFNESS_WEIGHT / target, weight / (target * xi0));
             a[(2 * s, 0)] = ws;
             for (j, &tau) in taus.iter().enumerate() {
@@ -164,6 +176,7 @@ impl MaxwellChain {
         for f in log_space(lo, hi, 4 * n_samples) {
             let k = chain.complex_stiffness(f);
             let target = alpha_f(f);
+            let xi0 = xi_at(f);
             chain.stiffness_error = chain.stiffness_error.max((k.re - target).abs() / target);
             chain.loss_error = chain
                 .loss_error
@@ -265,6 +278,7 @@ mod tests {
             amplitude_form: Default::default(),
             frequency_poly,
             frequency_power_law: None,
+            frequency_zener: None,
             temperature_stiffness_poly: None,
             temperature_damping_poly: None,
             thermal: None,

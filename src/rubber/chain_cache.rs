@@ -33,6 +33,10 @@ fn key(stage: &RubberStage, band_hz: [f64; 2], modes: &[ModeTarget]) -> Key {
             key.extend(range.iter().map(|r| r.to_bits()));
         }
     }
+    if let Some(law) = &stage.frequency_zener {
+        key.push(u64::MAX - 3);
+        key.extend([law.delta, law.alpha, law.relax_hz, law.reference_hz].map(f64::to_bits));
+    }
     if let Some(law) = &stage.frequency_power_law {
         key.extend([u64::MAX, law.exponent.to_bits(), law.reference_hz.to_bits()]);
     }
@@ -102,6 +106,7 @@ mod tests {
                 range: None,
             }),
             frequency_power_law: None,
+            frequency_zener: None,
             temperature_stiffness_poly: None,
             temperature_damping_poly: None,
             thermal: None,

@@ -48,6 +48,7 @@ pub fn rubber(from: &str, to: &str, k: f64, psi: f64) -> Connection {
             amplitude_form: Default::default(),
             frequency_poly: None,
             frequency_power_law: None,
+            frequency_zener: None,
             temperature_stiffness_poly: None,
             temperature_damping_poly: None,
             thermal: None,
@@ -87,6 +88,7 @@ pub fn seed000_stage(elements: RubberElements, psi: f64, temperature_c: f64) -> 
             range: Some([0.0, 300.0]),
         }),
         frequency_power_law: None,
+        frequency_zener: None,
         temperature_stiffness_poly: Some(Poly {
             coeffs: [0.000187, -0.02565, 1.530],
             range: None,

@@ -100,6 +100,7 @@ pub fn add_ui(ui: &mut Ui, cx: &mut EditCtx, model: &mut Model) {
                     amplitude_form: Default::default(),
                     frequency_poly: None,
                     frequency_power_law: None,
+                    frequency_zener: None,
                     temperature_stiffness_poly: None,
                     temperature_damping_poly: None,
                     thermal: None,
