@@ -198,6 +198,12 @@ impl RubberStage {
         }
     }
 
+    /// The catalogue's loss factor `ψ/2π·α_Tξ` (eq. 15) at the temperature factor
+    /// `alpha_txi`, before any frequency law.
+    pub fn catalogue_loss_factor(&self, alpha_txi: f64) -> f64 {
+        self.psi / std::f64::consts::TAU * alpha_txi
+    }
+
     /// The loss factor at vibration frequency `frequency_hz` (`None`: at the law's
     /// reference) when the catalogue's, with its temperature factor, is
     /// `catalogue_loss_factor`: at least a power law's `tan(nπ/2)`, with a Zener law's own
@@ -278,7 +284,7 @@ impl RubberStage {
             &mut warnings,
         );
         let k0 = self.static_stiffness_nm_per_rad();
-        let catalogue = self.psi / (2.0 * std::f64::consts::PI) * alpha_txi;
+        let catalogue = self.catalogue_loss_factor(alpha_txi);
         let loss_factor = self.loss_factor_at(frequency_hz, catalogue);
         RubberState {
             static_stiffness_nm_per_rad: k0,

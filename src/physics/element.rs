@@ -236,7 +236,7 @@ pub(super) fn rubber_law(
             frequency_power_law: stage.frequency_power_law,
             frequency_zener: stage.frequency_zener,
             loss_factor: match stage.frequency_zener {
-                Some(_) => stage.psi / std::f64::consts::TAU * state.alpha_txi,
+                Some(_) => stage.catalogue_loss_factor(state.alpha_txi),
                 None => state.loss_factor,
             },
             elastic_nm_per_rad: elastic,

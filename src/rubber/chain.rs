@@ -99,13 +99,10 @@ impl MaxwellChain {
         // (eq. 11, 15; a power law's tan(nπ/2) if larger): the chain meets the law there,
         // and its arms scale by α_Tξ(T)/α_Tξ(T0) at other temperatures.
         // A Zener law's loss varies with frequency ([`crate::model::frequency_zener`]);
-        // every other law's is `xi0` at every frequency.
+        // every other law's is the same at every frequency.
         let state = stage.state(None, stage.temperature_c, 0.0);
-        let catalogue = stage.psi / TAU * state.alpha_txi;
-        let xi_at = |f: f64| match stage.frequency_zener {
-            Some(_) => stage.loss_factor_at(Some(f), catalogue),
-            None => state.loss_factor,
-        };
+        let catalogue = stage.catalogue_loss_factor(state.alpha_txi);
+        let xi_at = |f: f64| stage.loss_factor_at(Some(f), catalogue);
         let alpha_f = |f: f64| stage.frequency_factor(f);
         let modes: Vec<ModeTarget> = modes
             .iter()
