@@ -96,8 +96,17 @@ fn with_effect(model: &Model, report: &Report, effect: Effect) -> Result<Model, 
     candidate.apply(&base, value).map(|(m, _)| m)
 }
 
+/// Fixed keys a diagnosis rechooses by the recordings, whatever value the candidate
+/// starts from: a backlash's mesh damping ([`super::backlash_damping`]) and a local
+/// mode's ([`super::branch_damping`]).
+const RECHOSEN: [&str; 2] = [
+    super::candidates_backlash::MESH_DAMPING_KEY,
+    super::branch_damping::KEY,
+];
+
 /// The candidate of `model` the verdict names: the same effect at the same place (the
-/// verdict's text parameters are the candidate's fixed keys).
+/// verdict's text parameters are the candidate's fixed keys, a [`RECHOSEN`] one at the
+/// verdict's value).
 fn place(model: &Model, verdict: &Verdict, effect: Effect) -> Result<Candidate, String> {
     let fixed: Vec<(&str, &str)> = verdict
         .parameters
@@ -107,14 +116,28 @@ fn place(model: &Model, verdict: &Verdict, effect: Effect) -> Result<Candidate, 
             ParameterValue::Number(_) => None,
         })
         .collect();
-    candidates(model, &[], true)
-        .into_iter()
+    // Every place a diagnosis searches: the branch form of a local mode at every node
+    // too (its band only bounds the fit, so any will do here).
+    let mut list = candidates(model, &[], true);
+    list.extend(super::branch::branch_candidates(model, [1.0, 1.0e4]));
+    list.into_iter()
         .find(|c| {
             c.effect == effect
                 && c.fixed.len() == fixed.len()
-                && c.fixed
-                    .iter()
-                    .all(|(k, v)| fixed.iter().any(|(fk, fv)| fk == k && fv == v))
+                && c.fixed.iter().all(|(k, v)| {
+                    fixed
+                        .iter()
+                        .any(|(fk, fv)| fk == k && (fv == v || RECHOSEN.contains(k)))
+                })
+        })
+        .map(|mut c| {
+            // A damping the diagnosis chose by the recordings is the verdict's.
+            for (k, v) in c.fixed.iter_mut() {
+                if let Some((_, fv)) = fixed.iter().find(|(fk, _)| fk == k) {
+                    *v = fv.to_string();
+                }
+            }
+            c
         })
         .ok_or_else(|| {
             let at: Vec<String> = fixed.iter().map(|(k, v)| format!("{k} `{v}`")).collect();
@@ -288,6 +311,41 @@ mod tests {
             .insert("connection".into(), text("shaft"));
         let e = accepted_model(&user, &nowhere).unwrap_err();
         assert!(e.contains("gear_backlash") && e.contains("`shaft`"), "{e}");
+    }
+
+    /// A local mode's branch at the brake with the damping the recordings chose (4 %):
+    /// the accepted model is the branch effect applied with that damping.
+    #[test]
+    fn a_branch_verdict_keeps_its_chosen_damping() {
+        let user = bench();
+        let fixed = [
+            ("node", text("brake")),
+            ("form", text("branch")),
+            ("inertia_ratio", text("0.15")),
+            ("damping_ratio", text("0.04")),
+            ("frequency_hz", num(80.0)),
+        ];
+        let r = report("unmodelled_mode", &fixed, &fixed);
+        let accepted = accepted_model(&user, &r).expect("accepted");
+        let spec = crate::effects::EffectSpec::new(Effect::UnmodelledMode)
+            .with("node", "brake")
+            .with("form", "branch")
+            .with("inertia_ratio", "0.15")
+            .with("damping_ratio", "0.04")
+            .with("frequency_hz", 80.0);
+        let expected = crate::effects::build_truth(&user, &spec, 0.0, 0).expect("applies");
+        assert_eq!(accepted, expected.model);
+        let spring = |m: &Model| match &m.connections.last().expect("spring").kind {
+            ConnectionKind::Shaft(s) => s.damping_nm_s_per_rad,
+            other => panic!("{other:?}"),
+        };
+        let mut at_two = r.clone();
+        at_two
+            .verdict
+            .parameters
+            .insert("damping_ratio".into(), text("0.02"));
+        let two = accepted_model(&user, &at_two).expect("accepted");
+        assert!((spring(&accepted) / spring(&two) - 2.0).abs() < 1e-12);
     }
 
     /// `none` and a sensor artifact leave the driveline as it is.

@@ -57,6 +57,10 @@ pub fn branch_candidates(model: &Model, band_hz: [f64; 2]) -> Vec<Candidate> {
                 ("node", node),
                 ("form", "branch".to_string()),
                 ("inertia_ratio", ratio.to_string()),
+                (
+                    super::branch_damping::KEY,
+                    crate::effects::branch::DEFAULT_DAMPING_RATIO.to_string(),
+                ),
             ],
             param: Param {
                 resonance: true,

@@ -40,6 +40,7 @@ pub mod accept;
 mod aside;
 mod backlash_damping;
 pub mod branch;
+pub mod branch_damping;
 pub mod candidates;
 pub mod candidates_amplitude;
 pub mod candidates_backlash;

@@ -191,11 +191,24 @@ pub fn screen_one(
         _ => {
             debug_assert!(linear_sees(c));
             let all: Vec<usize> = (0..cx.plain.len()).collect();
-            (
-                cx.propose(plain, Some(c), &all)?,
-                false,
-                "screened on the linear model".to_string(),
-            )
+            let e = cx.propose(plain, Some(c), &all)?;
+            // A local mode's damping, chosen by the recordings ([`super::branch_damping`]).
+            match super::branch_damping::rechoose(cx, c, &e)? {
+                Some((rechosen, better)) => {
+                    let note = format!(
+                        "screened on the linear model; its damping ratio {} fits better than {}",
+                        rechosen
+                            .fixed
+                            .iter()
+                            .find(|(k, _)| *k == super::branch_damping::KEY)
+                            .map_or("?", |(_, v)| v.as_str()),
+                        crate::effects::branch::DEFAULT_DAMPING_RATIO
+                    );
+                    candidate = rechosen;
+                    (better, false, note)
+                }
+                None => (e, false, "screened on the linear model".to_string()),
+            }
         }
     };
     Ok(Screened {
