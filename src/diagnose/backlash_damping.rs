@@ -46,20 +46,6 @@ pub struct Rechosen {
     pub rejected: Vec<String>,
 }
 
-/// `c` with its fixed mesh damping ratio replaced by `ratio`; `None` when `c` fixes none
-/// (the user damped the mesh, or it is no backlash candidate).
-pub fn with_ratio(c: &Candidate, ratio: f64) -> Option<Candidate> {
-    let mut v = c.clone();
-    let (_, value) = v.fixed.iter_mut().find(|(k, _)| *k == KEY)?;
-    *value = ratio.to_string();
-    Some(v)
-}
-
-/// The sum of squared z-scores the search minimises ([`Context::fit_time_domain`]).
-fn cost(cx: &Context, simulated: &[f64]) -> f64 {
-    cx.fit_z(simulated).iter().map(|z| z * z).sum()
-}
-
 /// Tries [`ALTERNATIVES`] for the mesh damping of `c` at `found`, its fit with the
 /// fixed damping, on `runs` (the recordings it was screened on). `None` when `c` fixes
 /// no damping, when `found` has no play, or when no alternative fits those recordings
@@ -77,7 +63,7 @@ pub fn rechoose(
     };
     let variants: Vec<Candidate> = ALTERNATIVES
         .iter()
-        .filter_map(|r| with_ratio(c, *r))
+        .filter_map(|r| c.with_fixed(KEY, *r))
         .collect();
     if variants.is_empty() {
         return Ok(None);
@@ -87,14 +73,14 @@ pub fn rechoose(
     let run = |v: &Candidate| {
         let (m, j) = v.apply(&base, value).map_err(DiagnoseError::Input)?;
         let s = trial::simulate(cx, Some(v), &m, j.as_ref(), only)?;
-        Ok::<_, DiagnoseError>((cost(cx, &s), m, j, s))
+        Ok::<_, DiagnoseError>((cx.fit_cost(&s), m, j, s))
     };
     let tried = parallel_map(variants.len(), cx.options.threads, &|k| {
         Some(run(&variants[k]))
     });
     let mut rejected = Vec::new();
     let mut best: Option<(usize, f64, Evaluated)> = None;
-    let mut to_beat = cost(cx, &found.simulated);
+    let mut to_beat = cx.fit_cost(&found.simulated);
     for (k, t) in tried.into_iter().enumerate() {
         let Some(t) = t else { continue };
         match t {
@@ -117,7 +103,7 @@ pub fn rechoose(
     let evaluated = match cx.fit_time_domain(found, &candidate, runs) {
         Ok(s) => {
             rejected.extend(s.rejected);
-            if cost(cx, &s.best.simulated) < cost_there {
+            if cx.fit_cost(&s.best.simulated) < cost_there {
                 s.best
             } else {
                 there
@@ -160,7 +146,7 @@ mod tests {
     fn a_variant_changes_the_damping_only() {
         let mut g = gear();
         for c in backlash_candidates("gearbox", &g) {
-            let v = with_ratio(&c, 0.02).expect("an undamped mesh");
+            let v = c.with_fixed(KEY, 0.02).expect("an undamped mesh");
             assert_eq!(v.name(), c.name());
             assert_eq!(v.param, c.param);
             let changed: Vec<_> = v
@@ -174,7 +160,7 @@ mod tests {
         }
         g.mesh_damping_nm_s_per_rad = 2.0;
         for c in backlash_candidates("gearbox", &g) {
-            assert!(with_ratio(&c, 0.02).is_none());
+            assert!(c.with_fixed(KEY, 0.02).is_none());
         }
     }
 }

@@ -33,20 +33,6 @@ pub const KEY: &str = "damping_ratio";
 /// bench's range (1–4 %).
 pub const ALTERNATIVES: [f64; 2] = [0.01, 0.04];
 
-/// `c` with its fixed damping ratio replaced by `ratio`; `None` when `c` fixes none (it
-/// is no branch candidate).
-pub fn with_ratio(c: &Candidate, ratio: f64) -> Option<Candidate> {
-    let mut v = c.clone();
-    let (_, value) = v.fixed.iter_mut().find(|(k, _)| *k == KEY)?;
-    *value = ratio.to_string();
-    Some(v)
-}
-
-/// The fitted observations' sum of squared z-scores.
-fn cost(cx: &Context, e: &Evaluated) -> f64 {
-    cx.fit_z(&e.simulated).iter().map(|z| z * z).sum()
-}
-
 /// Refits the branch candidate `c`, screened at `found`, with each of [`ALTERNATIVES`]
 /// from there on the surrogate (every plain factor free), and returns the one that fits
 /// the fitted observations better than `found` does, or `None` (no branch, no fitted
@@ -62,25 +48,28 @@ pub fn rechoose(
     }
     let variants: Vec<Candidate> = ALTERNATIVES
         .iter()
-        .filter_map(|r| with_ratio(c, *r))
+        .filter_map(|r| c.with_fixed(KEY, *r))
         .collect();
     let all: Vec<usize> = (0..cx.plain.len()).collect();
     let fits = parallel_map(variants.len(), cx.options.threads, &|k| {
         Some(cx.propose(found, Some(&variants[k]), &all))
     });
-    let mut best: Option<(f64, usize, Evaluated)> = None;
-    let mut to_beat = cost(cx, found);
+    let mut best: Option<(usize, Evaluated)> = None;
+    let mut to_beat = cx.fit_cost(&found.simulated);
     for (k, fit) in fits.into_iter().enumerate() {
         match fit {
-            Some(Ok(e)) if cost(cx, &e) < to_beat => {
-                to_beat = cost(cx, &e);
-                best = Some((to_beat, k, e));
+            Some(Ok(e)) => {
+                let cost = cx.fit_cost(&e.simulated);
+                if cost < to_beat {
+                    to_beat = cost;
+                    best = Some((k, e));
+                }
             }
             Some(Err(DiagnoseError::Cancelled)) => return Err(DiagnoseError::Cancelled),
             _ => {}
         }
     }
-    Ok(best.map(|(_, k, e)| (variants[k].clone(), e)))
+    Ok(best.map(|(k, e)| (variants[k].clone(), e)))
 }
 
 #[cfg(test)]
@@ -103,19 +92,9 @@ mod tests {
         let band = crate::diagnose::branch::excited_band_hz(&cx.observed).expect("a band");
         let c = branch_candidates(&model, band)
             .into_iter()
-            .find(|c| {
-                c.fixed
-                    .iter()
-                    .any(|(k, v)| *k == "inertia_ratio" && v == "0.15")
-            })
+            .find(|c| c.fixed_value("inertia_ratio") == Some("0.15"))
             .expect("a branch candidate");
-        assert_eq!(
-            c.fixed
-                .iter()
-                .find(|(k, _)| *k == KEY)
-                .map(|(_, v)| v.as_str()),
-            Some("0.02")
-        );
+        assert_eq!(c.fixed_value(KEY), Some("0.02"));
         let factors = vec![1.0; cx.plain.len()];
         let base = crate::diagnose::surrogate::scaled(&model, &cx.plain, &factors).expect("scales");
         let predict = |cx: &Context, v: &Candidate, f_hz: f64| {
@@ -126,7 +105,7 @@ mod tests {
         };
         // The branch where its damping shows most: tuned where 2 % and 4 % differ most
         // (onto a resonance of the bench), among frequencies 10 % apart over the band.
-        let damped = with_ratio(&c, 0.04).expect("a branch");
+        let damped = c.with_fixed(KEY, 0.04).expect("a branch");
         let apart = |f: f64| -> f64 {
             let (a, b) = (predict(&cx, &c, f).2, predict(&cx, &damped, f).2);
             a.iter().zip(&b).map(|(x, y)| (x - y).powi(2)).sum()
@@ -148,18 +127,14 @@ mod tests {
         let all: Vec<usize> = (0..cx.plain.len()).collect();
         let found = cx.propose(&at(&cx, &c), Some(&c), &all).expect("fits");
         let (chosen, e) = rechoose(&cx, &c, &found).expect("runs").expect("rechosen");
-        assert_eq!(
-            chosen
-                .fixed
-                .iter()
-                .find(|(k, _)| *k == KEY)
-                .map(|(_, v)| v.as_str()),
-            Some("0.04")
-        );
+        assert_eq!(chosen.fixed_value(KEY), Some("0.04"));
         // The fits are measured above what the truth's own point scores on its
         // recordings through the same surrogate (not zero on this bench's campaign).
-        let floor = cost(&cx, &at(&cx, &damped));
-        let (after, before) = (cost(&cx, &e) - floor, cost(&cx, &found) - floor);
+        let floor = cx.fit_cost(&at(&cx, &damped).simulated);
+        let (after, before) = (
+            cx.fit_cost(&e.simulated) - floor,
+            cx.fit_cost(&found.simulated) - floor,
+        );
         assert!(
             before > 1.0 && after < 0.2 * before,
             "{after} against {before}"

@@ -46,6 +46,24 @@ pub struct Candidate {
 }
 
 impl Candidate {
+    /// The value of its fixed key `key`, as written; `None` when it fixes none.
+    pub fn fixed_value(&self, key: &str) -> Option<&str> {
+        self.fixed
+            .iter()
+            .find(|(k, _)| *k == key)
+            .map(|(_, v)| v.as_str())
+    }
+
+    /// This candidate with its fixed key `key` set to `value` (a damping a diagnosis
+    /// rechooses, [`super::backlash_damping`], [`super::branch_damping`]); `None` when
+    /// it fixes no `key`.
+    pub fn with_fixed(&self, key: &str, value: f64) -> Option<Candidate> {
+        let mut v = self.clone();
+        let (_, written) = v.fixed.iter_mut().find(|(k, _)| *k == key)?;
+        *written = value.to_string();
+        Some(v)
+    }
+
     /// `"gear_backlash at gearbox"`.
     pub fn name(&self) -> String {
         // A sensor artifact's `kind` and a frequency law's `form` tell the rows of one

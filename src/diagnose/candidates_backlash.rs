@@ -32,10 +32,7 @@ pub const MESH_DAMPING_KEY: &str = "mesh_damping_ratio";
 
 /// The mesh damping ratio `c` fixes, as written in its keys; `None` when it fixes none.
 pub fn mesh_damping_ratio(c: &Candidate) -> Option<&str> {
-    c.fixed
-        .iter()
-        .find(|(k, _)| *k == MESH_DAMPING_KEY)
-        .map(|(_, v)| v.as_str())
+    c.fixed_value(MESH_DAMPING_KEY)
 }
 
 /// The softened candidate's form, as the report names it.

@@ -179,6 +179,12 @@ impl Context<'_> {
             .collect()
     }
 
+    /// The sum of squared z-scores of `predicted` over the fitted observations: what
+    /// the fits minimise (without the plain parameters' prior).
+    pub fn fit_cost(&self, predicted: &[f64]) -> f64 {
+        self.fit_z(predicted).iter().map(|z| z * z).sum()
+    }
+
     /// The time domain's difference from the linear model at `at`: what the surrogate
     /// adds to the linear model around it (zero where the linear model cannot be built).
     pub(super) fn correction(&self, at: &Evaluated) -> Vec<f64> {

@@ -153,7 +153,7 @@ impl Context<'_> {
             let value = to_x(u.clamp(lo, hi));
             let (m, j) = c.apply(&base, value).map_err(DiagnoseError::Input)?;
             let s = trial::simulate(self, Some(c), &m, j.as_ref(), Some((runs, &at.simulated)))?;
-            let cost = self.fit_z(&s).iter().map(|z| z * z).sum::<f64>();
+            let cost = self.fit_cost(&s);
             Ok((u, cost, s))
         };
         // Values of one stage run side by side, one per thread: a screening often

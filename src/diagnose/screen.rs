@@ -198,10 +198,8 @@ pub fn screen_one(
                     let note = format!(
                         "screened on the linear model; its damping ratio {} fits better than {}",
                         rechosen
-                            .fixed
-                            .iter()
-                            .find(|(k, _)| *k == super::branch_damping::KEY)
-                            .map_or("?", |(_, v)| v.as_str()),
+                            .fixed_value(super::branch_damping::KEY)
+                            .unwrap_or("?"),
                         crate::effects::branch::DEFAULT_DAMPING_RATIO
                     );
                     candidate = rechosen;
