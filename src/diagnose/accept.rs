@@ -7,8 +7,9 @@
 //! | an effect | every plain parameter times its fitted `scale.<name>` of the verdict's candidate row, then the effect at its fitted value, built by [`Candidate::apply`] (the code the fit used) |
 //! | `sensor_artifact` | the user's model unchanged: the artifact is in the measurement (a tape joint, an encoder's pitch error), not in the driveline, so there is nothing to add to the model |
 
-use super::candidates::{Candidate, candidates};
+use super::candidates::Candidate;
 use super::report::{ParameterValue, Report, Verdict};
+use super::searched::{Campaign, searched};
 use super::surrogate::{plain_parameters, scaled};
 use crate::effects::Effect;
 use crate::model::Model;
@@ -96,12 +97,14 @@ fn with_effect(model: &Model, report: &Report, effect: Effect) -> Result<Model, 
     candidate.apply(&base, value).map(|(m, _)| m)
 }
 
-/// Fixed keys a diagnosis rechooses by the recordings, whatever value the candidate
-/// starts from: a backlash's mesh damping ([`super::backlash_damping`]) and a local
-/// mode's ([`super::branch_damping`]).
-const RECHOSEN: [&str; 2] = [
+/// Fixed keys a diagnosis reads off its recordings, whatever value the candidate starts
+/// from: a backlash's mesh damping ([`super::backlash_damping`]), a local mode's
+/// ([`super::branch_damping`]) and a warming stage's heat time constant
+/// ([`super::drift::long_run_time_constant`]).
+const RECHOSEN: [&str; 3] = [
     super::candidates_backlash::MESH_DAMPING_KEY,
     super::branch_damping::KEY,
+    super::drift::TIME_CONSTANT_KEY,
 ];
 
 /// The candidate of `model` the verdict names: the same effect at the same place (the
@@ -116,11 +119,9 @@ fn place(model: &Model, verdict: &Verdict, effect: Effect) -> Result<Candidate, 
             ParameterValue::Number(_) => None,
         })
         .collect();
-    // Every place a diagnosis searches: the branch form of a local mode at every node
-    // too (its band only bounds the fit, so any will do here).
-    let mut list = candidates(model, &[], true);
-    list.extend(super::branch::branch_candidates(model, [1.0, 1.0e4]));
-    list.into_iter()
+    // Every place and form a diagnosis searches ([`super::searched`]).
+    searched(model, &Campaign::any())
+        .into_iter()
         .find(|c| {
             c.effect == effect
                 && c.fixed.len() == fixed.len()
@@ -346,6 +347,32 @@ mod tests {
             .insert("damping_ratio".into(), text("0.02"));
         let two = accepted_model(&user, &at_two).expect("accepted");
         assert!((spring(&accepted) / spring(&two) - 2.0).abs() < 1e-12);
+    }
+
+    /// Thermal drift in its second form, the heat time constant read off the long runs
+    /// (93 s here): the accepted model is the effect applied with that time constant, so
+    /// its stage's conductance is the fitted capacity over it.
+    #[test]
+    fn a_thermal_verdict_keeps_its_time_constant() {
+        let user = bench();
+        let fixed = [
+            ("connection", text("coupling")),
+            ("softening", text("linear")),
+            ("time_constant_s", text("9.3000e1")),
+            ("capacity_j_per_k", num(40.0)),
+        ];
+        let r = report("coupling_thermal_drift", &fixed, &fixed);
+        let accepted = accepted_model(&user, &r).expect("accepted");
+        let spec = crate::effects::EffectSpec::new(Effect::CouplingThermalDrift)
+            .with("connection", "coupling")
+            .with("softening", "linear")
+            .with("time_constant_s", "9.3000e1")
+            .with("capacity_j_per_k", 40.0);
+        let expected = crate::effects::build_truth(&user, &spec, 0.0, 0).expect("applies");
+        assert_eq!(accepted, expected.model);
+        let other = crate::effects::build_truth(&user, &spec.with("time_constant_s", 31.0), 0.0, 0)
+            .expect("applies");
+        assert_ne!(accepted, other.model);
     }
 
     /// `none` and a sensor artifact leave the driveline as it is.

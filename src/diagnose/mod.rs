@@ -80,6 +80,7 @@ pub mod run;
 #[cfg(test)]
 mod runup_tests;
 pub mod screen;
+pub mod searched;
 pub mod sensor;
 pub mod sensor_gain;
 mod sensor_local;

@@ -12,6 +12,7 @@
 //!    plan where two cannot be told apart or one is not detectable
 //!    ([`super::power_add`]).
 
+use super::DiagnoseError;
 use super::candidates::{Candidate, candidates};
 use super::holdout::held_out;
 use super::power_eval::{Evaluator, in_time_domain};
@@ -19,7 +20,6 @@ use super::power_fisher::{LAMBDA_DETECT, projected_lambda};
 use super::power_named::Rule;
 use super::power_plan::{Bench, planned};
 use super::power_size::{EffectSize, SizeLaw, effect_size};
-use super::{DiagnoseError, observe::RunShape};
 use crate::campaign::Plan;
 use crate::effects::Effect;
 use crate::model::Model;
@@ -290,22 +290,12 @@ fn fmt_param(size: &EffectSize, s: f64) -> String {
     }
 }
 
-/// Every candidate of `model` for the campaign `observed` describes.
+/// Every candidate of `model` for the campaign `observed` describes: the first form of
+/// each ([`super::candidates::candidates`]); the forms a diagnosis adds from the campaign
+/// ([`super::searched`]) are not sized.
 pub fn candidate_list(model: &Model, ev: &Evaluator) -> Vec<Candidate> {
-    let mut stations: Vec<String> = ev
-        .observed
-        .runs
-        .iter()
-        .flat_map(|r| r.stations.clone())
-        .collect();
-    stations.sort();
-    stations.dedup();
-    let long_run = ev
-        .observed
-        .runs
-        .iter()
-        .any(|r| matches!(r.regime, RunShape::LongRun { .. }));
-    candidates(model, &stations, long_run)
+    let campaign = super::searched::Campaign::of(&ev.observed);
+    candidates(model, &campaign.stations, campaign.long_run)
 }
 
 /// Analyses every candidate of `model` on the observables of `plan` measured by

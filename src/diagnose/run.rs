@@ -2,11 +2,11 @@
 //! parameters, screen every candidate effect, verify the promising ones in the time
 //! domain, score on held-out data, decide.
 
-use super::candidates::candidates;
 use super::context::Evaluated;
-use super::observe::{RunShape, observe};
+use super::observe::observe;
 use super::restart::second_starts;
 use super::screen::{Screened, screen_one};
+use super::searched::{Campaign, searched};
 use super::unsimulable::context_and_baseline;
 use super::verify::{VERIFY_ROUNDS, verify};
 use super::{
@@ -89,32 +89,7 @@ pub fn diagnose(
     let cx = cx;
     let mut plain_rejected = fitted.rejected;
     let plain_fit = fitted.best;
-    let stations: Vec<String> = {
-        let mut s: Vec<String> = cx
-            .observed
-            .runs
-            .iter()
-            .flat_map(|r| r.stations.clone())
-            .collect();
-        s.sort();
-        s.dedup();
-        s
-    };
-    let long_run = cx
-        .observed
-        .runs
-        .iter()
-        .any(|r| matches!(r.regime, RunShape::LongRun { .. }));
-    let mut list = candidates(model, &stations, long_run);
-    // A warming stage's drift in a second form: the shape the long runs show, its
-    // conductance the capacity over their time constant ([`super::drift`]).
-    if let Some(tau_s) = super::drift::long_run_time_constant(&cx.observed) {
-        list.extend(super::drift::with_time_constant(&list, tau_s));
-    }
-    // The branch form of `unmodelled_mode`: a local mode hanging on any node.
-    if let Some(band) = super::branch::excited_band_hz(&cx.observed) {
-        list.extend(super::branch::branch_candidates(model, band));
-    }
+    let mut list = searched(model, &Campaign::of(&cx.observed));
     // A sensor artifact at a geared station leaks through the order analysis.
     let gains = sensor_gain::unit_gains(recordings, &cx.observed, options.max_order);
     sensor_gain::attach(&mut list, &gains);

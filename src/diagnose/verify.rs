@@ -122,6 +122,51 @@ pub fn verify(
             }
         }
     }
+    // A verified local mode's damping, checked in the time domain
+    // ([`super::branch_damping::recheck_in_time`]); side by side too.
+    let branches: Vec<usize> = chosen
+        .iter()
+        .copied()
+        .filter(|i| {
+            let s = &screened[*i];
+            s.verified
+                && s.rejected.is_none()
+                && s.candidate
+                    .fixed_value(super::branch_damping::KEY)
+                    .is_some()
+        })
+        .collect();
+    let rechecked = super::parallel::map_reporting(
+        branches.len(),
+        cx.options.threads,
+        &|k| {
+            let s = &screened[branches[k]];
+            super::branch_damping::recheck_in_time(cx, &s.candidate, &s.evaluated)
+        },
+        &mut |_, _| Ok(()),
+    )?;
+    for (i, r) in branches.into_iter().zip(rechecked) {
+        let s = &mut screened[i];
+        match r {
+            Err(e) if trial::is_fatal(&e) => return Err(e),
+            Err(e) => s
+                .rejected_steps
+                .push(trial::reason("the damping in the time domain", &e)),
+            Ok(None) => {}
+            Ok(Some((candidate, stepped))) => {
+                s.note = format!(
+                    "{}; in the time domain its damping ratio {} fits better",
+                    s.note,
+                    candidate
+                        .fixed_value(super::branch_damping::KEY)
+                        .unwrap_or("?")
+                );
+                s.candidate = candidate;
+                s.evaluated = stepped.best;
+                s.rejected_steps.extend(stepped.rejected);
+            }
+        }
+    }
     // A verified candidate that could be the verdict must gain by its own effect
     // ([`super::own_gain`]); checked side by side too.
     let verified: Vec<usize> = chosen
