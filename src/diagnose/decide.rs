@@ -92,6 +92,15 @@ pub fn report(
         if let Some(j) = super::branch::branch_inertia_kg_m2(c, &e.model) {
             parameters.insert("inertia_kg_m2".into(), number(j));
         }
+        // A Zener form's relaxation frequency in Hz, which its `relax_ratio` only names
+        // as a multiple of the first mode (the explanation gives it).
+        if c.form() == Some(crate::effects::rubber_zener::FORM)
+            && let Some(hz) = c
+                .fixed_value("connection")
+                .and_then(|k| crate::effects::rubber_zener::relax_hz(&e.model, k))
+        {
+            parameters.insert("relax_hz".into(), number(hz));
+        }
         for (p, f) in cx.plain.iter().zip(&e.factors) {
             parameters.insert(format!("scale.{}", p.name), number(*f));
         }

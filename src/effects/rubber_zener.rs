@@ -87,6 +87,18 @@ pub(crate) fn zener(
     Ok((p.resolved, summary))
 }
 
+/// The relaxation frequency (Hz) of the Zener law that `model`'s rubber stage
+/// `connection` follows, `None` when it follows none: what a fitted candidate's
+/// `relax_ratio` came to on the model it was fitted on.
+pub fn relax_hz(model: &Model, connection: &str) -> Option<f64> {
+    model.connections.iter().find_map(|c| match &c.kind {
+        crate::model::ConnectionKind::Rubber(r) if c.name == connection => {
+            r.frequency_zener.map(|z| z.relax_hz)
+        }
+        _ => None,
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -135,8 +147,13 @@ mod tests {
         let by_ratio = EffectSpec::new(Effect::CouplingFrequencyDependence)
             .with("form", FORM)
             .with("relax_ratio", 4.0);
-        let law = zener_of(&build_truth(&user, &by_ratio, 0.0, 0).unwrap().model).unwrap();
+        let placed = build_truth(&user, &by_ratio, 0.0, 0).unwrap().model;
+        let law = zener_of(&placed).unwrap();
         assert!((law.relax_hz - 4.0 * first).abs() < 1e-9 * first);
+        // What the report names: that frequency in Hz, at that stage only.
+        assert_eq!(relax_hz(&placed, "coupling"), Some(law.relax_hz));
+        assert_eq!(relax_hz(&placed, "shaft"), None);
+        assert_eq!(relax_hz(&user, "coupling"), None);
         assert_eq!(law.reference_hz, first);
         assert!(build_truth(&user, &spec.clone().with("exponent", 0.1), 0.0, 0).is_err());
         assert!(build_truth(&user, &spec.with("delta", -0.1), 0.0, 0).is_err());
