@@ -55,11 +55,7 @@ pub const IN_TIME: [f64; 3] = [0.01, DEFAULT_DAMPING_RATIO, 0.04];
 /// the fitted observations better than `found` does, or `None` (no branch, no fitted
 /// frequency, or no better damping). An alternative that cannot be fitted is skipped;
 /// only cancelling is an error.
-pub fn rechoose(
-    cx: &Context,
-    c: &Candidate,
-    found: &Evaluated,
-) -> Result<Option<(Candidate, Evaluated)>, DiagnoseError> {
+pub fn rechoose(cx: &Context, c: &Candidate, found: &Evaluated) -> Result<Better, DiagnoseError> {
     if found.value.is_none() {
         return Ok(None);
     }
@@ -71,22 +67,8 @@ pub fn rechoose(
     let fits = parallel_map(variants.len(), cx.options.threads, &|k| {
         Some(cx.propose(found, Some(&variants[k]), &all))
     });
-    let mut best: Option<(usize, Evaluated)> = None;
-    let mut to_beat = cx.fit_cost(&found.simulated);
-    for (k, fit) in fits.into_iter().enumerate() {
-        match fit {
-            Some(Ok(e)) => {
-                let cost = cx.fit_cost(&e.simulated);
-                if cost < to_beat {
-                    to_beat = cost;
-                    best = Some((k, e));
-                }
-            }
-            Some(Err(DiagnoseError::Cancelled)) => return Err(DiagnoseError::Cancelled),
-            _ => {}
-        }
-    }
-    Ok(best.map(|(k, e)| (variants[k].clone(), e)))
+    let (best, _) = best_better(cx, &variants, fits, cx.fit_cost(&found.simulated))?;
+    Ok(best)
 }
 
 /// Runs the verified branch candidate `c` at its fit `verified` with each other damping
@@ -118,9 +100,31 @@ pub fn recheck_in_time(
     let tried = parallel_map(variants.len(), cx.options.threads, &|k| {
         Some(run(&variants[k]))
     });
+    let (best, mut rejected) = best_better(cx, &variants, tried, cx.fit_cost(&verified.simulated))?;
+    let Some((candidate, there)) = best else {
+        return Ok(None);
+    };
+    let mut stepped = cx.rounds(there, Some(&candidate), 1, None);
+    rejected.append(&mut stepped.rejected);
+    stepped.rejected = rejected;
+    Ok(Some((candidate, stepped)))
+}
+
+/// A variant of a candidate that fits better, with its fit; `None` when none does.
+type Better = Option<(Candidate, Evaluated)>;
+
+/// Of `tried` (the fit of each of `variants`, in order, from [`parallel_map`]), the
+/// variant that fits the fitted observations best, when it beats the fit cost `to_beat`,
+/// with its fit; and the reason of each variant that could not be fitted (`"damping_ratio
+/// = 0.04: …"`). Only cancelling is an error.
+fn best_better(
+    cx: &Context,
+    variants: &[Candidate],
+    tried: Vec<Option<Result<Evaluated, DiagnoseError>>>,
+    mut to_beat: f64,
+) -> Result<(Better, Vec<String>), DiagnoseError> {
     let mut rejected = Vec::new();
     let mut best: Option<(usize, Evaluated)> = None;
-    let mut to_beat = cx.fit_cost(&verified.simulated);
     for (k, t) in tried.into_iter().enumerate() {
         match t {
             Some(Ok(e)) => {
@@ -138,14 +142,7 @@ pub fn recheck_in_time(
             None => {}
         }
     }
-    let Some((k, there)) = best else {
-        return Ok(None);
-    };
-    let candidate = variants[k].clone();
-    let mut stepped = cx.rounds(there, Some(&candidate), 1, None);
-    rejected.append(&mut stepped.rejected);
-    stepped.rejected = rejected;
-    Ok(Some((candidate, stepped)))
+    Ok((best.map(|(k, e)| (variants[k].clone(), e)), rejected))
 }
 
 #[cfg(test)]
