@@ -89,6 +89,7 @@ pub mod settling;
 pub mod spread;
 pub mod surrogate;
 mod svg;
+mod sweeps;
 #[cfg(test)]
 mod tests;
 #[cfg(test)]

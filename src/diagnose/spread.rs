@@ -8,11 +8,9 @@
 //! model ([`crate::response`]), scales it to the mean over the measured cycle speeds:
 //! `mean_c A(n_c) / A(n̄)`.
 
-use super::observe::{Observed, RunShape};
-use super::surrogate::causal_system;
+use super::observe::{Observed, Run, RunShape};
+use super::sweeps::CampaignSweeps;
 use crate::model::Model;
-use crate::physics::{Excitation, System};
-use crate::response::forced_response_orders;
 
 /// Most cycle speeds evaluated per record (quantiles of the measured ones).
 const MAX_SPEEDS: usize = 24;
@@ -34,19 +32,31 @@ fn quantiles(values: &[f64], n: usize) -> Vec<f64> {
 /// Per observation: the factor from the amplitude at the mean speed to its mean over the
 /// measured cycle speeds (1 for run-ups, and where the linear model cannot be built).
 pub fn spread_factors(model: &Model, observed: &Observed) -> Vec<f64> {
+    let sweeps = CampaignSweeps::new(model, observed, |r| part_speeds(&observed.runs[r]).concat());
     let mut factors = vec![1.0; observed.observations.len()];
-    for (r, run) in observed.runs.iter().enumerate() {
-        if matches!(run.regime, RunShape::Ramp { .. }) {
-            continue;
-        }
-        let Some(system) = causal_system(model, run.load) else {
-            continue;
-        };
-        let orders = run_orders(observed, r);
-        let excitation = Excitation::new(model, &system, run.load, &orders);
-        run_factors(observed, r, &system, &excitation, &orders, &mut factors);
-    }
+    factors_into(observed, &sweeps, &mut factors);
     factors
+}
+
+/// The speeds each part of a steady run is evaluated at, rpm: its mean, then
+/// [`MAX_SPEEDS`] quantiles of its measured cycle speeds; empty for a part with no cycle
+/// speeds and for a run-up.
+pub(super) fn part_speeds(run: &Run) -> Vec<Vec<f64>> {
+    let mean = match run.regime {
+        RunShape::Steady { speed_rpm } | RunShape::LongRun { speed_rpm } => speed_rpm,
+        RunShape::Ramp { .. } => return Vec::new(),
+    };
+    run.cycle_speeds_rpm
+        .iter()
+        .map(|cycles| {
+            let mut speeds = vec![mean];
+            speeds.extend(quantiles(cycles, MAX_SPEEDS));
+            if speeds.len() < 2 {
+                speeds.clear();
+            }
+            speeds
+        })
+        .collect()
 }
 
 /// The orders observed in run `r`, sorted, each once.
@@ -62,46 +72,32 @@ pub(super) fn run_orders(observed: &Observed, r: usize) -> Vec<f64> {
     orders
 }
 
-/// [`spread_factors`] of run `r` into `factors`, with the run's linear system and its
-/// excitation at `orders` ([`run_orders`]) already built (the linear model's prediction
-/// builds the same ones, [`super::surrogate::linear_predict`]). A run-up is left alone.
-pub(super) fn run_factors(
-    observed: &Observed,
-    r: usize,
-    system: &System,
-    excitation: &Excitation,
-    orders: &[f64],
-    factors: &mut [f64],
-) {
-    let run = &observed.runs[r];
-    let mean = match run.regime {
-        RunShape::Steady { speed_rpm } | RunShape::LongRun { speed_rpm } => speed_rpm,
-        RunShape::Ramp { .. } => return,
-    };
-    for (part, cycles) in run.cycle_speeds_rpm.iter().enumerate() {
-        let mut speeds = vec![mean];
-        speeds.extend(quantiles(cycles, MAX_SPEEDS));
-        if speeds.len() < 2 {
-            continue;
-        }
-        let Ok(response) = forced_response_orders(system, excitation, &speeds) else {
-            continue;
-        };
-        for (i, o) in observed.observations.iter().enumerate() {
-            if o.run != r || o.part != part {
+/// [`spread_factors`] into `factors`, from the campaign's linear sweeps, which hold every
+/// steady part's [`part_speeds`]. A part one of whose speeds could not be solved is left
+/// at 1.
+pub(super) fn factors_into(observed: &Observed, sweeps: &CampaignSweeps, factors: &mut [f64]) {
+    for (r, run) in observed.runs.iter().enumerate() {
+        for (part, speeds) in part_speeds(run).iter().enumerate() {
+            if speeds.is_empty() {
                 continue;
             }
-            let node = system.node_names.iter().position(|n| *n == o.station);
-            let q = orders.iter().position(|x| (x - o.order).abs() < 1e-9);
-            let (Some(node), Some(q)) = (node, q) else {
-                continue;
-            };
-            let a = &response.ias_amplitude_rpm[node][q];
-            let at_mean = a[0];
-            let largest = a.iter().fold(0.0_f64, |m, x| m.max(*x));
-            if at_mean > 1e-6 * largest.max(1e-12) && at_mean > 1e-9 {
-                let spread = a[1..].iter().sum::<f64>() / (a.len() - 1) as f64;
-                factors[i] = (spread / at_mean).clamp(1.0 / LIMIT, LIMIT);
+            for (i, o) in observed.observations.iter().enumerate() {
+                if o.run != r || o.part != part {
+                    continue;
+                }
+                let Some(found) = sweeps.find(r, &o.station, o.order) else {
+                    continue;
+                };
+                let a: Option<Vec<f64>> = speeds.iter().map(|v| sweeps.at(found, *v)).collect();
+                let Some(a) = a else {
+                    continue;
+                };
+                let at_mean = a[0];
+                let largest = a.iter().fold(0.0_f64, |m, x| m.max(*x));
+                if at_mean > 1e-6 * largest.max(1e-12) && at_mean > 1e-9 {
+                    let spread = a[1..].iter().sum::<f64>() / (a.len() - 1) as f64;
+                    factors[i] = (spread / at_mean).clamp(1.0 / LIMIT, LIMIT);
+                }
             }
         }
     }

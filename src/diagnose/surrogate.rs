@@ -11,11 +11,11 @@
 
 use super::observe::{Observed, RunShape};
 use super::sensor::{self, TapeJoint};
-use super::spread::{run_factors, run_orders};
+use super::spread::{factors_into, part_speeds};
+use super::sweeps::CampaignSweeps;
 use crate::effects::param_error::{parameter_names, scale_parameter};
 use crate::model::Model;
-use crate::physics::{Excitation, OperatingPoint, System};
-use crate::response::forced_response_orders;
+use crate::physics::{OperatingPoint, System};
 
 /// A plain parameter: its full name (`connection.shaft.stiffness`) and the node or
 /// connection it belongs to.
@@ -92,47 +92,43 @@ pub fn ratios(model: &Model) -> Vec<(String, f64)> {
 
 /// The linear model's amplitude of every observation, with the speed spread and the
 /// sensors applied like the time domain's (`None` when the model cannot be built).
+/// A steady run is compared at its regime's speed, a run-up bin at its own; the runs at
+/// one load share one system and one sweep ([`super::sweeps`]).
 pub fn linear_predict(
     model: &Model,
     observed: &Observed,
     joint: Option<&TapeJoint>,
 ) -> Option<Vec<f64>> {
-    let mut out = vec![0.0; observed.observations.len()];
-    // The speed spread's factors ([`super::spread`]) come from the same system and
-    // excitation of each run, built once here for both.
-    let mut factors = vec![1.0; observed.observations.len()];
-    for (r, run) in observed.runs.iter().enumerate() {
-        let system = causal_system(model, run.load)?;
-        let mine: Vec<usize> = (0..out.len())
-            .filter(|i| observed.observations[*i].run == r)
+    let compared_at = |o: &super::observe::Observation| match observed.runs[o.run].regime {
+        RunShape::Steady { speed_rpm } | RunShape::LongRun { speed_rpm } => speed_rpm,
+        RunShape::Ramp { .. } => o.speed_rpm,
+    };
+    let sweeps = CampaignSweeps::new(model, observed, |r| {
+        let mut speeds: Vec<f64> = observed
+            .observations
+            .iter()
+            .filter(|o| o.run == r)
+            .map(compared_at)
             .collect();
-        let orders = run_orders(observed, r);
-        let mut speeds: Vec<f64> = match run.regime {
-            RunShape::Steady { speed_rpm } | RunShape::LongRun { speed_rpm } => vec![speed_rpm],
-            RunShape::Ramp { .. } => mine
-                .iter()
-                .map(|i| observed.observations[*i].speed_rpm)
-                .collect(),
-        };
-        speeds.sort_by(f64::total_cmp);
-        speeds.dedup();
-        let excitation = Excitation::new(model, &system, run.load, &orders);
-        let response = forced_response_orders(&system, &excitation, &speeds).ok()?;
-        for i in mine {
-            let o = &observed.observations[i];
-            let node = system.node_names.iter().position(|n| *n == o.station)?;
-            let q = orders.iter().position(|x| (x - o.order).abs() < 1e-9)?;
-            let s = speeds
-                .iter()
-                .position(|v| (v - o.speed_rpm).abs() < 1e-9)
-                .unwrap_or(0);
-            out[i] = response.ias_amplitude_rpm[node][q][s];
-        }
-        run_factors(observed, r, &system, &excitation, &orders, &mut factors);
+        speeds.extend(part_speeds(&observed.runs[r]).concat());
+        speeds
+    });
+    if (0..observed.runs.len()).any(|r| sweeps.system(r).is_none()) {
+        return None;
     }
+    let mut out = observed
+        .observations
+        .iter()
+        .map(|o| sweeps.at(sweeps.find(o.run, &o.station, o.order)?, compared_at(o)))
+        .collect::<Option<Vec<f64>>>()?;
+    let mut factors = vec![1.0; out.len()];
+    factors_into(observed, &sweeps, &mut factors);
     for (v, f) in out.iter_mut().zip(factors) {
         *v *= f;
     }
-    sensor::measure(observed, &ratios(model), joint, &mut out);
+    let ratios = sweeps
+        .ratios_at_full_load()
+        .unwrap_or_else(|| ratios(model));
+    sensor::measure(observed, &ratios, joint, &mut out);
     Some(out)
 }

@@ -102,12 +102,16 @@ pub(crate) fn hysteretic(
         };
         // The chain's loss factor rises with ψ, peaks, then falls (the fit trades loss for
         // stiffness): take the first ψ on a 0.05 grid that reaches the target, then bisect.
-        let grid: Vec<(f64, f64)> = (1..=100)
-            .map(|i| {
-                let psi = 0.05 * f64::from(i);
-                (psi, loss(at(&mut stage, psi)))
-            })
-            .collect();
+        // The grid is walked up only to that ψ (each point is a chain fit, and the target
+        // is mostly reached below ψ = 1); all of it only to report the most it reaches.
+        let mut grid: Vec<(f64, f64)> = Vec::with_capacity(100);
+        for i in 1..=100 {
+            let psi = 0.05 * f64::from(i);
+            grid.push((psi, loss(at(&mut stage, psi))));
+            if grid[grid.len() - 1].1 >= xi_target {
+                break;
+            }
+        }
         let Some(i) = grid.iter().position(|(_, xi)| *xi >= xi_target) else {
             let (psi, xi) = grid
                 .iter()
@@ -125,6 +129,11 @@ pub(crate) fn hysteretic(
         let (mut lo_psi, mut hi_psi) = (if i == 0 { 1e-4 } else { grid[i - 1].0 }, grid[i].0);
         for _ in 0..60 {
             let mid = 0.5 * (lo_psi + hi_psi);
+            // The bracket is down to adjacent floating-point numbers: further halvings
+            // leave it as it is.
+            if mid == lo_psi || mid == hi_psi {
+                break;
+            }
             if loss(at(&mut stage, mid)) < xi_target {
                 lo_psi = mid;
             } else {

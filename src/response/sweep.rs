@@ -4,16 +4,11 @@
 //! Magnitudes are `sqrt(re² + im²)` rather than `hypot`: the amplitudes here are far from
 //! overflow, and `hypot` cost 15 % of the sweep.
 
-use super::lu::LuWorkspace;
 use super::peak::PeakSynthesizer;
-use super::tree::TreeSolver;
-use crate::physics::{Excitation, PhysicsError, System, distributed, matrices};
-use nalgebra::DMatrix;
+use super::point::{PointSolver, RPM_PER_RAD_S};
+use crate::physics::{Excitation, PhysicsError, System, distributed};
 use num_complex::Complex64;
 use std::f64::consts::{PI, TAU};
-
-/// rad/s to rpm.
-const RPM_PER_RAD_S: f64 = 60.0 / TAU;
 
 /// Steady forced response over a speed sweep. Amplitudes are zero-to-peak, in each node's
 /// or connection's own shaft.
@@ -70,7 +65,7 @@ pub fn forced_response_orders(
 /// Every order ≤ [`crate::limits::Limits::max_order`] (the synthesis samples a cycle at
 /// 16 points per period of the highest order: order 10⁹ asked 137 GB, issue 13), and
 /// speeds and speeds × orders ≤ [`crate::limits::Limits::max_sweep_points`].
-fn check_sizes(orders: &[f64], n_speeds: usize) -> Result<(), PhysicsError> {
+pub(super) fn check_sizes(orders: &[f64], n_speeds: usize) -> Result<(), PhysicsError> {
     let limits = crate::limits::current();
     for &q in orders {
         crate::limits::check_value("order (--orders)", q, limits.max_order, Some("--max-order"))?;
@@ -101,7 +96,6 @@ fn sweep(
     let orders = &excitation.orders;
     check_sizes(orders, speeds_rpm.len())?;
     let (n_nodes, n_orders, n_speeds) = (system.node_names.len(), orders.len(), speeds_rpm.len());
-    let n_elements = system.elements.len();
     let (rows, row_of) = result_rows(system);
     let n_conn = rows.len();
     let mut response = Response {
@@ -118,81 +112,33 @@ fn sweep(
         power_loss_w: vec![vec![0.0; n_speeds]; n_conn],
         power_loss_by_order_w: vec![vec![vec![0.0; n_speeds]; n_orders]; n_conn],
     };
-    let mut dynamic = DMatrix::<Complex64>::zeros(n, n);
-    let mut angle = vec![Complex64::default(); n];
-    let mut lu = LuWorkspace::default();
-    // O(n) elimination for tree-shaped drivelines; the dense LU for loops and near-zero
-    // pivots.
-    let mut tree = TreeSolver::new(system);
-    let mut element_z = vec![Complex64::default(); n_elements];
-    // (stiffness, loss factor) of each element at the current frequency, and its viscous
-    // damping: evaluated once per (speed, order) for the matrix and the element results.
-    let mut stiffness = vec![(0.0, 0.0); n_elements];
-    let viscous: Vec<f64> = system
-        .elements
-        .iter()
-        .map(|e| e.viscous_damping())
-        .collect();
+    let mut point = PointSolver::new(system, excitation);
     let mut torques = vec![vec![Complex64::default(); n_orders]; n_conn];
     // Referred angular velocity phasor of each DOF per order, rpm.
     let mut velocities = vec![vec![Complex64::default(); n_orders]; n];
     let mut half_pp = vec![0.0; n];
     let mut synthesizer = PeakSynthesizer::new(orders);
     for (s, &speed) in speeds_rpm.iter().enumerate() {
-        let omega_ref = speed / RPM_PER_RAD_S;
-        for (q, &order) in orders.iter().enumerate() {
-            let omega = order * omega_ref;
+        for q in 0..n_orders {
+            let omega = point.solve(speed, q)?;
             let frequency_hz = omega / TAU;
-            system.check_frequency(frequency_hz)?;
-            excitation.forcing(q, speed, &mut angle);
-            for (slot, e) in stiffness.iter_mut().zip(&system.elements) {
-                *slot = e.stiffness_at(frequency_hz);
-            }
-            for ((z, &(k, loss)), &c_visc) in element_z.iter_mut().zip(&stiffness).zip(&viscous) {
-                *z = Complex64::new(k, k * loss + omega * c_visc);
-            }
-            let by_tree = tree
-                .as_mut()
-                .is_some_and(|t| t.solve(system, omega, &element_z, &mut angle));
-            // Solved in place: `angle` holds the forcing on entry and Θ_q on return.
-            let solved = by_tree || {
-                excitation.forcing(q, speed, &mut angle);
-                matrices::dynamic_stiffness_with(
-                    system,
-                    omega,
-                    stiffness.iter().copied(),
-                    &mut dynamic,
-                );
-                lu.factor_solve(&mut dynamic, &mut angle)
-            };
-            if !solved || !angle.iter().all(|v| v.is_finite()) {
-                return Err(PhysicsError::Singular(format!(
-                    "order {order} at {speed} rpm ({frequency_hz:.3} Hz) sits on an undamped resonance"
-                )));
-            }
-            for (node, (&dof, &ratio)) in system
-                .dof_of_node
-                .iter()
-                .zip(&system.speed_ratio)
-                .enumerate()
-            {
-                response.ias_amplitude_rpm[node][q][s] =
-                    ratio.abs() * omega * angle[dof].norm_sqr().sqrt() * RPM_PER_RAD_S;
+            for (node, amplitudes) in response.ias_amplitude_rpm.iter_mut().enumerate() {
+                amplitudes[q][s] = point.ias_amplitude_rpm(node, omega);
             }
             if synthesize {
-                for (v, a) in velocities.iter_mut().zip(&angle) {
+                for (v, a) in velocities.iter_mut().zip(&point.angle) {
                     v[q] = Complex64::new(0.0, omega * RPM_PER_RAD_S) * a;
                 }
             }
             for (c, e) in system.elements.iter().enumerate() {
-                let (k, loss) = stiffness[c];
+                let (k, loss) = point.stiffness[c];
                 let row = row_of[c];
                 let (torque_ref, energy_per_cycle) = element_torque_and_loss(
                     e,
-                    element_z[c],
-                    k * loss + omega * viscous[c],
+                    point.element_z[c],
+                    k * loss + omega * point.viscous[c],
                     omega,
-                    &angle,
+                    &point.angle,
                 );
                 if rows[row] == c {
                     let torque_own = torque_ref / e.torque_ratio;

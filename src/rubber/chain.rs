@@ -32,10 +32,11 @@
 //! relative errors over the band, and [`crate::modal::law_deviations`] its deviation at
 //! each mode.
 
-use super::nnls::nnls;
+use super::nnls::nnls_from;
 use crate::model::RubberStage;
 use nalgebra::{DMatrix, DVector};
 use num_complex::Complex64;
+use std::cell::RefCell;
 use std::f64::consts::TAU;
 
 /// Relaxation times per decade of frequency.
@@ -83,6 +84,13 @@ pub struct MaxwellChain {
     pub stiffness_error: f64,
     /// Worst relative error of the imaginary part (loss) over the band.
     pub loss_error: f64,
+}
+
+thread_local! {
+    /// Which arms (and the equilibrium spring) came out positive in the last chain this
+    /// thread fitted: the next fit starts from it ([`nnls_from`], which gives the same
+    /// chain from any start).
+    static LAST_SUPPORT: RefCell<Vec<bool>> = const { RefCell::new(Vec::new()) };
 }
 
 impl MaxwellChain {
@@ -154,7 +162,12 @@ impl MaxwellChain {
         let last = 2 * rows.len();
         a[(last, 0)] = STATIC_WEIGHT / static_stiffness;
         b[last] = STATIC_WEIGHT;
-        let k = nnls(&a, &b);
+        // From the support of this thread's last fit: a fit's neighbours share it.
+        let k = LAST_SUPPORT.with(|last| {
+            let k = nnls_from(&a, &b, &last.borrow());
+            *last.borrow_mut() = k.iter().map(|v| *v > 0.0).collect();
+            k
+        });
         let arms: Vec<(f64, f64)> = k
             .iter()
             .skip(1)
