@@ -134,6 +134,7 @@ stiffness = 4.0e4
 at = "a"
 order = 1
 amplitude = 100.0
+phase_deg = 0.0
 "#;
         let model = crate::model::parse_model(text, "two-dof.toml").expect("model");
         let system = System::nominal(&model, OperatingPoint::default()).expect("system");
