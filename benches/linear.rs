@@ -251,6 +251,17 @@ fn response_group(c: &mut Criterion) {
             .expect("response")
         })
     });
+    // The diagnosis' surrogate: the IAS amplitudes alone (`response::amplitudes`).
+    g.bench_function("10dof_200x24_amplitudes_only", |b| {
+        b.iter(|| {
+            torsim::response::order_amplitudes(
+                black_box(&s),
+                black_box(&excitation),
+                black_box(&sweep),
+            )
+            .expect("amplitudes")
+        })
+    });
     let m3 = three_dof();
     let s3 = system(&m3);
     let excitation3 = Excitation::new(&m3, &s3, 1.0, &[1.0]);

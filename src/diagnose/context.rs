@@ -7,7 +7,7 @@ use super::fit::{Bounds, levenberg_marquardt};
 use super::observe::Observed;
 use super::residual::{chi2_per_point, z_scores};
 use super::sensor::{self, TapeJoint};
-use super::surrogate::{Plain, linear_predict, ratios, scaled};
+use super::surrogate::{Around, Plain, ratios, scaled};
 use super::{DiagnoseError, DiagnoseOptions, forward, spread};
 use crate::model::Model;
 
@@ -185,13 +185,9 @@ impl Context<'_> {
         self.fit_z(predicted).iter().map(|z| z * z).sum()
     }
 
-    /// The time domain's difference from the linear model at `at`: what the surrogate
-    /// adds to the linear model around it (zero where the linear model cannot be built).
-    pub(super) fn correction(&self, at: &Evaluated) -> Vec<f64> {
-        match linear_predict(&at.model, &self.observed, at.joint.as_ref()) {
-            Some(f0) => at.simulated.iter().zip(&f0).map(|(t, f)| t - f).collect(),
-            None => vec![0.0; at.simulated.len()],
-        }
+    /// The surrogate around `at` ([`Around`]).
+    pub(super) fn around(&self, at: &Evaluated) -> Around {
+        Around::new(&at.model, &at.simulated, &self.observed, at.joint.as_ref())
     }
 
     /// Fits, on the surrogate around `at`, the plain factors `free` (the others stay at
@@ -242,16 +238,10 @@ impl Context<'_> {
             start.push(at.value.unwrap_or(c.param.start));
             bounds.push(super::branch::fit_bounds(c, at.value));
         }
-        let correction = self.correction(at);
+        let around = self.around(at);
         let predict = |x: &[f64]| -> Option<Vec<f64>> {
             let (m, j) = build(x)?;
-            let f = linear_predict(&m, &self.observed, j.as_ref())?;
-            Some(
-                f.iter()
-                    .zip(&correction)
-                    .map(|(a, d)| (a + d).max(0.0))
-                    .collect(),
-            )
+            around.searched(&m, &self.observed, j.as_ref())
         };
         let residuals = |x: &[f64]| -> Option<Vec<f64>> {
             let mut r = self.fit_z(&predict(x)?);
@@ -289,7 +279,9 @@ impl Context<'_> {
         )
         .map_or(start, |f| f.x);
         let (m, j) = build(&x).ok_or_else(|| DiagnoseError::Input("bad fit".into()))?;
-        let simulated = predict(&x).ok_or_else(|| DiagnoseError::Input("bad fit".into()))?;
+        let simulated = around
+            .at(&m, &self.observed, j.as_ref())
+            .ok_or_else(|| DiagnoseError::Input("bad fit".into()))?;
         let factors = full(&x);
         let value = candidate.and_then(|_| value_of(&x));
         Ok(self.scored(m, j, simulated, factors, value))

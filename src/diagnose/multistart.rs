@@ -23,7 +23,7 @@ use super::context::{
 };
 use super::fit::{Bounds, FitResult, levenberg_marquardt, parallel_map};
 use super::rounds::Stepped;
-use super::surrogate::{linear_predict, scaled};
+use super::surrogate::scaled;
 
 /// Design points besides the user's values. Each costs one surrogate fit (milliseconds
 /// to a few tenths of a second); seven keep the plain fit within a second on two cores
@@ -140,16 +140,10 @@ impl Context<'_> {
     /// minimum. Each with the surrogate's prediction in `simulated`.
     pub fn plain_proposals(&self, at: &Evaluated) -> Result<Vec<Evaluated>, DiagnoseError> {
         let n = self.plain.len();
-        let correction = self.correction(at);
+        let around = self.around(at);
         let predict = |x: &[f64]| -> Option<Vec<f64>> {
             let m = scaled(self.user, &self.plain, x).ok()?;
-            let f = linear_predict(&m, &self.observed, at.joint.as_ref())?;
-            Some(
-                f.iter()
-                    .zip(&correction)
-                    .map(|(a, d)| (a + d).max(0.0))
-                    .collect(),
-            )
+            around.searched(&m, &self.observed, at.joint.as_ref())
         };
         let residuals = |x: &[f64]| -> Option<Vec<f64>> {
             let mut r = self.fit_z(&predict(x)?);
@@ -189,7 +183,9 @@ impl Context<'_> {
             .map(|x| {
                 let bad = || DiagnoseError::Input("bad plain fit".into());
                 let m = scaled(self.user, &self.plain, &x).map_err(DiagnoseError::Input)?;
-                let simulated = predict(&x).ok_or_else(bad)?;
+                let simulated = around
+                    .at(&m, &self.observed, at.joint.as_ref())
+                    .ok_or_else(bad)?;
                 Ok(self.scored(m, at.joint.clone(), simulated, x, None))
             })
             .collect()

@@ -99,6 +99,17 @@ pub fn linear_predict(
     observed: &Observed,
     joint: Option<&TapeJoint>,
 ) -> Option<Vec<f64>> {
+    linear_predict_with(model, observed, joint, None)
+}
+
+/// [`linear_predict`], with the speed spread's factors `spread` (one per observation)
+/// given instead of computed from `model` when `Some`.
+fn linear_predict_with(
+    model: &Model,
+    observed: &Observed,
+    joint: Option<&TapeJoint>,
+    spread: Option<&[f64]>,
+) -> Option<Vec<f64>> {
     let compared_at = |o: &super::observe::Observation| match observed.runs[o.run].regime {
         RunShape::Steady { speed_rpm } | RunShape::LongRun { speed_rpm } => speed_rpm,
         RunShape::Ramp { .. } => o.speed_rpm,
@@ -110,7 +121,9 @@ pub fn linear_predict(
             .filter(|o| o.run == r)
             .map(compared_at)
             .collect();
-        speeds.extend(part_speeds(&observed.runs[r]).concat());
+        if spread.is_none() {
+            speeds.extend(part_speeds(&observed.runs[r]).concat());
+        }
         speeds
     });
     if (0..observed.runs.len()).any(|r| sweeps.system(r).is_none()) {
@@ -121,8 +134,16 @@ pub fn linear_predict(
         .iter()
         .map(|o| sweeps.at(sweeps.find(o.run, &o.station, o.order)?, compared_at(o)))
         .collect::<Option<Vec<f64>>>()?;
-    let mut factors = vec![1.0; out.len()];
-    factors_into(observed, &sweeps, &mut factors);
+    let computed;
+    let factors = match spread {
+        Some(f) => f,
+        None => {
+            let mut f = vec![1.0; out.len()];
+            factors_into(observed, &sweeps, &mut f);
+            computed = f;
+            &computed
+        }
+    };
     for (v, f) in out.iter_mut().zip(factors) {
         *v *= f;
     }
@@ -132,3 +153,71 @@ pub fn linear_predict(
     sensor::measure(observed, &ratios, joint, &mut out);
     Some(out)
 }
+
+/// The surrogate of a fit around its point `θ_k` (output space mapping, above):
+/// `S(θ) = F(θ) + (T(θ_k) − F(θ_k))`, floored at zero.
+///
+/// During the search ([`Around::searched`]) the speed wobble's factors
+/// ([`super::spread`]) are those of `θ_k`, held like the correction: they are a slow
+/// correction of a few percent at most (within [`super::spread`]'s limit), and
+/// recomputing them swept each steady part at 25 speeds, six sevenths of the points a
+/// prediction solved (benchtruth campaigns: some 250 of 290). The point a search ends at
+/// is scored with its own factors ([`Around::at`]), as before.
+pub struct Around {
+    /// `T(θ_k) − F(θ_k)` per observation, rpm (zero where the linear model cannot be
+    /// built at `θ_k`).
+    correction: Vec<f64>,
+    /// The wobble's factors at `θ_k`, per observation.
+    spread: Vec<f64>,
+}
+
+impl Around {
+    /// The surrogate around `model` (`θ_k`), whose time-domain prediction is `simulated`.
+    pub fn new(
+        model: &Model,
+        simulated: &[f64],
+        observed: &Observed,
+        joint: Option<&TapeJoint>,
+    ) -> Self {
+        let spread = super::spread::spread_factors(model, observed);
+        // With θ_k's own factors this is `linear_predict` at θ_k, to the bit.
+        let correction = match linear_predict_with(model, observed, joint, Some(&spread)) {
+            Some(f0) => simulated.iter().zip(&f0).map(|(t, f)| t - f).collect(),
+            None => vec![0.0; simulated.len()],
+        };
+        Self { correction, spread }
+    }
+
+    /// The surrogate at `model` during a search: θ_k's wobble factors.
+    pub fn searched(
+        &self,
+        model: &Model,
+        observed: &Observed,
+        joint: Option<&TapeJoint>,
+    ) -> Option<Vec<f64>> {
+        let f = linear_predict_with(model, observed, joint, Some(&self.spread))?;
+        Some(self.corrected(f))
+    }
+
+    /// The surrogate at `model`, the wobble factors its own: a search's result.
+    pub fn at(
+        &self,
+        model: &Model,
+        observed: &Observed,
+        joint: Option<&TapeJoint>,
+    ) -> Option<Vec<f64>> {
+        let f = linear_predict(model, observed, joint)?;
+        Some(self.corrected(f))
+    }
+
+    fn corrected(&self, f: Vec<f64>) -> Vec<f64> {
+        f.iter()
+            .zip(&self.correction)
+            .map(|(a, d)| (a + d).max(0.0))
+            .collect()
+    }
+}
+
+#[cfg(test)]
+#[path = "surrogate_tests.rs"]
+mod tests;
