@@ -160,7 +160,7 @@ pub(crate) fn hysteretic(
 /// bracket and shrinks it from both ends, superlinearly (order ≈ 1.44); until the bracket
 /// is [`CROSSING_WIDTH`] wide relative to `x`, at most 60 steps. Each step here is a
 /// chain fit: bisection to adjacent floats took some 50 of them per pass, this takes
-/// about ten. A bracket whose `f` does not change sign is not searched (its midpoint).
+/// about ten, and some seven more halve the last bracket to adjacent floats. A bracket whose `f` does not change sign is not searched (its midpoint).
 fn crossing(mut f: impl FnMut(f64) -> f64, lo: (f64, f64), hi: (f64, f64)) -> f64 {
     let ((mut a, mut fa), (mut b, mut fb)) = (lo, hi);
     if !(fa < 0.0 && fb >= 0.0) {
@@ -200,6 +200,19 @@ fn crossing(mut f: impl FnMut(f64) -> f64, lo: (f64, f64), hi: (f64, f64)) -> f6
             last = 1;
         }
     }
+    // Then halved down to adjacent floats, as bisection alone ends: the calibration, and
+    // the truths written with it (`tests/data/diagnosis`), stay what they were.
+    for _ in 0..60 {
+        let mid = 0.5 * (a + b);
+        if mid <= a || mid >= b {
+            break;
+        }
+        if f(mid) < 0.0 {
+            a = mid;
+        } else {
+            b = mid;
+        }
+    }
     0.5 * (a + b)
 }
 
@@ -234,10 +247,12 @@ mod tests {
 
     /// On a convex function, where plain regula falsi keeps one end for ever, and on one
     /// that rises to a peak as the chain's loss factor does, the crossing comes out within
-    /// the bracket's width of the exact root in under 20 evaluations.
+    /// four ulps of the exact root in under 30 evaluations.
     #[test]
     fn the_crossing_is_found_in_few_steps() {
-        let cases: [(fn(f64) -> f64, f64, f64, f64); 3] = [
+        // (function, bracket's low end, high end, exact root)
+        type Case = (fn(f64) -> f64, f64, f64, f64);
+        let cases: [Case; 3] = [
             (|x| x.exp() - 10.0, 0.0, 5.0, 10f64.ln()),
             (|x| x * x * x - 2.0, 1.0, 2.0, 2f64.cbrt()),
             // ψ/(1 + ψ²) rises to 0.5 at ψ = 1: its first crossing of 0.4 is at 0.5.
@@ -257,7 +272,7 @@ mod tests {
                 (x - root).abs() <= 2.0 * CROSSING_WIDTH * root,
                 "{x} against {root}"
             );
-            assert!(calls < 20, "{calls} evaluations");
+            assert!(calls < 30, "{calls} evaluations");
         }
         // No sign change: the bracket's middle, unsearched.
         assert_eq!(
