@@ -32,9 +32,10 @@ fn quantiles(values: &[f64], n: usize) -> Vec<f64> {
 /// Per observation: the factor from the amplitude at the mean speed to its mean over the
 /// measured cycle speeds (1 for run-ups, and where the linear model cannot be built).
 pub fn spread_factors(model: &Model, observed: &Observed) -> Vec<f64> {
-    let sweeps = CampaignSweeps::new(model, observed, |r| part_speeds(&observed.runs[r]).concat());
+    let parts: Vec<_> = observed.runs.iter().map(part_speeds).collect();
+    let sweeps = CampaignSweeps::new(model, observed, |r| parts[r].concat());
     let mut factors = vec![1.0; observed.observations.len()];
-    factors_into(observed, &sweeps, &mut factors);
+    factors_into(observed, &parts, &sweeps, &mut factors);
     factors
 }
 
@@ -72,12 +73,17 @@ pub(super) fn run_orders(observed: &Observed, r: usize) -> Vec<f64> {
     orders
 }
 
-/// [`spread_factors`] into `factors`, from the campaign's linear sweeps, which hold every
-/// steady part's [`part_speeds`]. A part one of whose speeds could not be solved is left
-/// at 1.
-pub(super) fn factors_into(observed: &Observed, sweeps: &CampaignSweeps, factors: &mut [f64]) {
-    for (r, run) in observed.runs.iter().enumerate() {
-        for (part, speeds) in part_speeds(run).iter().enumerate() {
+/// [`spread_factors`] into `factors`, from each run's [`part_speeds`] (`parts[run]`) and
+/// the campaign's linear sweeps, which hold them all. A part one of whose speeds could
+/// not be solved is left at 1.
+pub(super) fn factors_into(
+    observed: &Observed,
+    parts: &[Vec<Vec<f64>>],
+    sweeps: &CampaignSweeps,
+    factors: &mut [f64],
+) {
+    for (r, run_parts) in parts.iter().enumerate() {
+        for (part, speeds) in run_parts.iter().enumerate() {
             if speeds.is_empty() {
                 continue;
             }

@@ -114,6 +114,11 @@ fn linear_predict_with(
         RunShape::Steady { speed_rpm } | RunShape::LongRun { speed_rpm } => speed_rpm,
         RunShape::Ramp { .. } => o.speed_rpm,
     };
+    // The wobble's speeds, swept only when its factors are not given.
+    let parts: Vec<Vec<Vec<f64>>> = match spread {
+        Some(_) => Vec::new(),
+        None => observed.runs.iter().map(part_speeds).collect(),
+    };
     let sweeps = CampaignSweeps::new(model, observed, |r| {
         let mut speeds: Vec<f64> = observed
             .observations
@@ -121,8 +126,8 @@ fn linear_predict_with(
             .filter(|o| o.run == r)
             .map(compared_at)
             .collect();
-        if spread.is_none() {
-            speeds.extend(part_speeds(&observed.runs[r]).concat());
+        if let Some(run_parts) = parts.get(r) {
+            speeds.extend(run_parts.concat());
         }
         speeds
     });
@@ -139,7 +144,7 @@ fn linear_predict_with(
         Some(f) => f,
         None => {
             let mut f = vec![1.0; out.len()];
-            factors_into(observed, &sweeps, &mut f);
+            factors_into(observed, &parts, &sweeps, &mut f);
             computed = f;
             &computed
         }

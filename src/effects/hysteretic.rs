@@ -101,7 +101,8 @@ pub(crate) fn hysteretic(
             MaxwellChain::fit_at_modes(stage, band, &targets).complex_stiffness(f_ref)
         };
         // The chain's loss factor rises with ψ, peaks, then falls (the fit trades loss for
-        // stiffness): take the first ψ on a 0.05 grid that reaches the target, then bisect.
+        // stiffness): take the first ψ on a 0.05 grid that reaches the target, then search
+        // the bracket below it ([`crossing`]).
         // The grid is walked up only to that ψ (each point is a chain fit, and the target
         // is mostly reached below ψ = 1); all of it only to report the most it reaches.
         let mut grid: Vec<(f64, f64)> = Vec::with_capacity(100);
@@ -160,7 +161,8 @@ pub(crate) fn hysteretic(
 /// bracket and shrinks it from both ends, superlinearly (order ≈ 1.44); until the bracket
 /// is [`CROSSING_WIDTH`] wide relative to `x`, at most 60 steps. Each step here is a
 /// chain fit: bisection to adjacent floats took some 50 of them per pass, this takes
-/// about ten, and some seven more halve the last bracket to adjacent floats. A bracket whose `f` does not change sign is not searched (its midpoint).
+/// about ten, and some seven more halve the last bracket to adjacent floats. A bracket
+/// whose `f` does not change sign is not searched (its midpoint).
 fn crossing(mut f: impl FnMut(f64) -> f64, lo: (f64, f64), hi: (f64, f64)) -> f64 {
     let ((mut a, mut fa), (mut b, mut fb)) = (lo, hi);
     if !(fa < 0.0 && fb >= 0.0) {
@@ -200,8 +202,9 @@ fn crossing(mut f: impl FnMut(f64) -> f64, lo: (f64, f64), hi: (f64, f64)) -> f6
             last = 1;
         }
     }
-    // Then halved down to adjacent floats, as bisection alone ends: the calibration, and
-    // the truths written with it (`tests/data/diagnosis`), stay what they were.
+    // Then halved down to adjacent floats, where bisection alone ended: ψ comes out as it
+    // did (the shipped hysteretic truth's ψ to the bit; its stiffness moved in the 16th
+    // digit, `tests/data/diagnosis`).
     for _ in 0..60 {
         let mid = 0.5 * (a + b);
         if mid <= a || mid >= b {

@@ -166,6 +166,19 @@ fn qr_solution(sub: &DMatrix<f64>, b: &DVector<f64>) -> Option<DVector<f64>> {
 mod tests {
     use super::*;
 
+    /// The storage and loss rows of 12 Maxwell arms, 4 per decade, at 60 frequencies over
+    /// the same three decades (120 × 12).
+    fn chain_like() -> DMatrix<f64> {
+        DMatrix::from_fn(120, 12, |i, j| {
+            let w = 10f64.powf(0.05 * (i / 2) as f64 - 0.25 * j as f64);
+            if i % 2 == 0 {
+                w * w / (1.0 + w * w)
+            } else {
+                w / (1.0 + w * w)
+            }
+        })
+    }
+
     /// From no guess: Lawson and Hanson's cold start.
     fn nnls(a: &DMatrix<f64>, b: &DVector<f64>) -> DVector<f64> {
         nnls_from(a, b, &[])
@@ -195,14 +208,7 @@ mod tests {
     /// rounding) and 1e-8 (normal equations: its square); dependent columns go to SVD.
     #[test]
     fn qr_and_svd_agree() {
-        let a = DMatrix::from_fn(120, 12, |i, j| {
-            let w = 10f64.powf(0.05 * (i / 2) as f64 - 0.25 * j as f64);
-            if i % 2 == 0 {
-                w * w / (1.0 + w * w)
-            } else {
-                w / (1.0 + w * w)
-            }
-        });
+        let a = chain_like();
         let b = DVector::from_fn(120, |i, _| 1.0 + 0.3 * ((i / 2) as f64).sqrt());
         let qr = qr_solution(&a, &b).expect("independent columns");
         let normal = Normal {
@@ -246,14 +252,7 @@ mod tests {
     /// the same to the bit: the answer is the least squares on the final support.
     #[test]
     fn a_warm_start_gives_the_cold_answer() {
-        let a = DMatrix::from_fn(120, 12, |i, j| {
-            let w = 10f64.powf(0.05 * (i / 2) as f64 - 0.25 * j as f64);
-            if i % 2 == 0 {
-                w * w / (1.0 + w * w)
-            } else {
-                w / (1.0 + w * w)
-            }
-        });
+        let a = chain_like();
         let b = DVector::from_fn(120, |i, _| 1.0 + 0.8 * ((i / 2) as f64 * 0.3).sin());
         let cold = nnls(&a, &b);
         let support: Vec<bool> = cold.iter().map(|v| *v > 0.0).collect();
