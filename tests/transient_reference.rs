@@ -135,9 +135,9 @@ fn undamped_free_vibration_conserves_energy() {
     let model = parse_model(&text, "undamped.toml").unwrap();
     let plant = Plant::new(&model, 1.0, None).unwrap();
     let profile = SpeedProfile::steady(1000.0);
-    let mut mass = vec![0.0; 3];
+    let mut scratch = torsim::transient::forces::Scratch::new(3);
     let mut rhs =
-        |t: f64, y: &[f64], dy: &mut [f64]| plant.derivatives(t, y, dy, &profile, &mut mass);
+        |t: f64, y: &[f64], dy: &mut [f64]| plant.derivatives(t, y, dy, &profile, &mut scratch);
     let y0 = vec![0.001, -0.002, 0.003, 5.0, -3.0, 1.0];
     let energy = |y: &[f64]| {
         let (j, k) = ([0.5, 0.02, 0.01], [2.0e5, 1.0e4, 1.0e4]);

@@ -75,12 +75,12 @@ fn tables() -> &'static Tables {
     })
 }
 
-/// The kernel at `x` samples from its centre (table with linear interpolation).
-#[inline]
-fn kernel(x: f64) -> f64 {
+/// The kernel at `x` samples from its centre, by linear interpolation in `table`
+/// ([`tables`]' kernel, which the caller fetches once for all 32 taps of a position).
+#[inline(always)]
+fn kernel_in(table: &[f64], x: f64) -> f64 {
     let a = x.abs() * RESOLUTION as f64;
     let i = a as usize;
-    let table = &tables().kernel;
     if i + 1 >= table.len() {
         return 0.0;
     }
@@ -113,8 +113,9 @@ impl Taps {
             weights: [0.0; 2 * HALF_WIDTH],
             total: 0.0,
         };
+        let table = &tables().kernel;
         for j in lo..=hi {
-            let w = kernel(frac + (i0 - j) as f64);
+            let w = kernel_in(table, frac + (i0 - j) as f64);
             taps.weights[taps.count] = w;
             taps.count += 1;
             taps.total += w;

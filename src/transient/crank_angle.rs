@@ -1,12 +1,12 @@
 //! Angle arithmetic of the engine's right-hand side ([`super::forces`]), which runs six
 //! or more times per step for every cylinder: the crank angle wrapped to the working
-//! cycle, and the sine and cosine of a vibration angle.
+//! cycle, and the sine and cosine of the crank angle.
 //!
-//! Written here rather than taken from `libm`: the vibration angle is small, and its
-//! series, with multiplications only and short dependency chains, is cheaper than a
-//! general `sincos` with its argument reduction. (A table of π/8 steps for the mean crank
-//! angle within the cycle was tried too: no faster than `libm`'s `sincos` on the
-//! cng-genset run-up, 289 against 290 ms, so not kept.)
+//! Written here rather than taken from `libm`: between evaluations the crank angle moves
+//! little, and the series of that small move, with multiplications only and short
+//! dependency chains, is cheaper than a general `sincos` with its argument reduction. (A
+//! table of π/8 steps for the mean crank angle within the cycle was tried too: no faster
+//! than `libm`'s `sincos` on the cng-genset run-up, 289 against 290 ms, so not kept.)
 
 /// `x` wrapped into `[0, cycle)` when it is within one cycle of it (the usual case).
 #[inline]
@@ -28,14 +28,34 @@ pub(super) fn wrap(x: f64, cycle: f64) -> f64 {
     }
 }
 
-/// Sine and cosine of a vibration angle, rad: their Taylor series for |x| < 0.25
-/// ([`series_sin_cos`]), the library's beyond.
-#[inline]
-pub(super) fn small_sin_cos(x: f64) -> (f64, f64) {
-    if x.abs() < 0.25 {
-        series_sin_cos(x)
-    } else {
-        x.sin_cos()
+/// The sine and cosine of the crank angle, from the last one worked out exactly: a
+/// Dormand–Prince step evaluates the right-hand side six times within a few hundredths
+/// of a radian of crank angle, so each evaluation adds its small offset from that anchor
+/// by the angle-addition formulas ([`series_sin_cos`]) instead of calling `sincos` (13 %
+/// of a thermal-drift diagnosis's time, `perf`, 2026-12-02). A fresh anchor is taken
+/// when the angle is 0.25 rad or more away (the cycle's wrap included). The result is the
+/// library's within a few ulp, and a run's is reproducible: the anchor is scratch of that
+/// run alone ([`super::forces::Scratch`]).
+#[derive(Debug, Clone, Copy, Default)]
+pub(super) struct CrankAnchor {
+    /// The anchor's angle, rad, with its sine and cosine; `None` before the first.
+    at: Option<(f64, f64, f64)>,
+}
+
+impl CrankAnchor {
+    /// Sine and cosine of `angle`, rad.
+    #[inline]
+    pub(super) fn sin_cos(&mut self, angle: f64) -> (f64, f64) {
+        if let Some((a, s_a, c_a)) = self.at {
+            let d = angle - a;
+            if d.abs() < 0.25 {
+                let (s_d, c_d) = series_sin_cos(d);
+                return (s_a * c_d + c_a * s_d, c_a * c_d - s_a * s_d);
+            }
+        }
+        let (s, c) = angle.sin_cos();
+        self.at = Some((angle, s, c));
+        (s, c)
     }
 }
 
@@ -82,6 +102,25 @@ mod tests {
             assert!(
                 (s - x.sin()).abs() < 2e-16 && (c - x.cos()).abs() < 2e-16,
                 "{x}"
+            );
+        }
+    }
+
+    /// Angles walked in small and large steps, across the anchor's reach and back: within
+    /// 4e-16 of the library (its own rounding and the series' truncation, 2e-17).
+    #[test]
+    fn the_anchor_matches_the_library() {
+        let mut anchor = CrankAnchor::default();
+        let mut angle: f64 = 0.0;
+        for i in 0..20_000 {
+            angle += if i % 97 == 0 { 1.3 } else { 0.0123 };
+            if angle > 12.0 {
+                angle -= 12.5;
+            }
+            let (s, c) = anchor.sin_cos(angle);
+            assert!(
+                (s - angle.sin()).abs() < 4e-16 && (c - angle.cos()).abs() < 4e-16,
+                "{angle}"
             );
         }
     }

@@ -31,6 +31,7 @@ use super::TransientError;
 use super::crank_remainder::{Term, mark_columns, remainder_into};
 use super::dopri::hermite;
 use super::exact_step::{StepMatrices, padded_len};
+use super::forces::Scratch;
 use super::plant::Plant;
 use super::speed::SpeedProfile;
 use nalgebra::{DMatrix, DVector};
@@ -243,20 +244,20 @@ fn probe(plant: &Plant, speed_rpm: f64) -> Option<DMatrix<f64>> {
     bare.harmonics.clear();
     let profile = SpeedProfile::steady(speed_rpm);
     let m = plant.state_len;
-    let mut mass = vec![0.0; plant.n_dof];
-    let f = |y: &[f64], mass: &mut [f64]| {
+    let mut scratch = Scratch::new(plant.n_dof);
+    let f = |y: &[f64], scratch: &mut Scratch| {
         let mut dy = vec![0.0; m];
-        bare.derivatives(0.0, y, &mut dy, &profile, mass);
+        bare.derivatives(0.0, y, &mut dy, &profile, scratch);
         dy
     };
-    let f0 = f(&vec![0.0; m], &mut mass);
+    let f0 = f(&vec![0.0; m], &mut scratch);
     let mut out = DMatrix::<f64>::zeros(m, m + 1);
     let mut y = vec![0.0; m];
     for j in 0..m {
         y[j] = 1.0;
-        let f1 = f(&y, &mut mass);
+        let f1 = f(&y, &mut scratch);
         y[j] = 2.0;
-        let f2 = f(&y, &mut mass);
+        let f2 = f(&y, &mut scratch);
         y[j] = 0.0;
         for i in 0..m {
             let column = f1[i] - f0[i];

@@ -4,7 +4,7 @@
 //! `α` the mean angular acceleration of a ramp, and the Maxwell arms and rubber
 //! temperatures as further states.
 
-use super::crank_angle::{small_sin_cos, wrap};
+use super::crank_angle::{CrankAnchor, wrap};
 use super::plant::{GOVERNOR_FILTER_HZ, Plant, PlantElement, PlantLaw, RubberPlant, Temperature};
 use super::speed::SpeedProfile;
 use crate::model::AmplitudeForm;
@@ -18,6 +18,25 @@ pub struct ElementState {
     pub torque_ref_nm: f64,
     /// Power dissipated in its damping, W.
     pub power_w: f64,
+}
+
+/// What one run's right-hand side keeps between evaluations: the per-DOF inertia, which
+/// the reciprocating masses vary with crank angle, and the crank angle's last sine and
+/// cosine ([`CrankAnchor`]). One per run, never shared between runs.
+#[derive(Debug, Clone)]
+pub struct Scratch {
+    mass: Vec<f64>,
+    crank: CrankAnchor,
+}
+
+impl Scratch {
+    /// Scratch for a plant of `n_dof` degrees of freedom.
+    pub fn new(n_dof: usize) -> Self {
+        Self {
+            mass: vec![0.0; n_dof],
+            crank: CrankAnchor::default(),
+        }
+    }
 }
 
 impl Plant {
@@ -70,18 +89,19 @@ impl Plant {
         }
     }
 
-    /// Derivatives `dy = f(t, y)` for the speed profile `profile`; `mass` is scratch of
-    /// length `n_dof`.
+    /// Derivatives `dy = f(t, y)` for the speed profile `profile`, with the run's
+    /// `scratch` (of this plant's `n_dof`).
     pub fn derivatives(
         &self,
         t: f64,
         y: &[f64],
         dy: &mut [f64],
         profile: &SpeedProfile,
-        mass: &mut [f64],
+        scratch: &mut Scratch,
     ) {
         let n = self.n_dof;
         let (phi_m, big_omega, alpha) = profile.at(t);
+        let mass = &mut scratch.mass;
         mass.copy_from_slice(&self.inertia_kg_m2);
         dy[..n].copy_from_slice(&y[n..2 * n]);
         for i in 0..n {
@@ -116,15 +136,18 @@ impl Plant {
         if let Some(engine) = &self.engine {
             let m = engine.oscillating_mass_kg;
             let (r, lambda) = (engine.crank_radius_m, engine.lambda);
-            // The mean angle wrapped to the cycle once, and its sine and cosine: each
-            // cylinder's angle is that plus its DOF's vibration minus its firing angle,
-            // combined by the angle-addition formulas (the vibration angle is small).
-            let phase_m = phi_m.rem_euclid(engine.cycle_rad);
-            let (s_m, c_m) = phase_m.sin_cos();
-            // sin/cos(φ_m + θ) of the last DOF worked out: an engine's cylinders share
-            // their node, and θ is not always small (a run-up's crank strays from the
-            // measured ramp by up to 3 rad), where each cylinder paid a `sincos` of its own
-            // (14 % of a thermal-drift diagnosis, `perf`).
+            // The mean angle wrapped to the cycle once: each cylinder's angle is that plus
+            // its DOF's vibration θ minus its firing angle. sin/cos(φ_m + θ) of the last
+            // DOF worked out is kept: an engine's cylinders share their node, and θ is not
+            // always small (a run-up's crank strays from the measured ramp by up to 3 rad),
+            // where each cylinder paid a `sincos` of its own (14 % of a thermal-drift
+            // diagnosis, `perf`). Each DOF's is taken from the run's anchor
+            // ([`CrankAnchor`]).
+            // (Not `rem_euclid`: its `fmod` is exact and slow, 2 % of a thermal-drift
+            // diagnosis; this is within an ulp of the mean angle, which carries that
+            // rounding anyway.)
+            let cycle = engine.cycle_rad;
+            let phase_m = wrap(phi_m - (phi_m / cycle).floor() * cycle, cycle);
             let mut last: Option<(usize, f64, f64)> = None;
             for c in &engine.cylinders {
                 let speed = c.ratio * (big_omega + y[n + c.dof]);
@@ -133,8 +156,7 @@ impl Plant {
                     let (s_a, c_a) = match last {
                         Some((dof, s_a, c_a)) if dof == c.dof => (s_a, c_a),
                         _ => {
-                            let (s_v, c_v) = small_sin_cos(y[c.dof]);
-                            let a = (s_m * c_v + c_m * s_v, c_m * c_v - s_m * s_v);
+                            let a = scratch.crank.sin_cos(phase_m + y[c.dof]);
                             last = Some((c.dof, a.0, a.1));
                             a
                         }

@@ -6,6 +6,7 @@ use super::TransientError;
 use super::budget::{StepBudget, bound_thermal_time_constants};
 use super::dopri::Dopri5;
 use super::exact::Exact;
+use super::forces::Scratch;
 use super::observe::{Event, take_chunk};
 use super::periodic_start::add_periodic_state;
 use super::plant::{Plant, PlantLaw, Temperature};
@@ -169,7 +170,7 @@ fn run_recorded(
     let mut plant = Plant::new(model, options.load, options.viscous_above_hz)?;
     let cycle_rad = plant.engine.as_ref().map_or(2.0 * TAU, |e| e.cycle_rad);
     let mut profile = SpeedProfile::steady(from_rpm);
-    let mut mass = vec![0.0; plant.n_dof];
+    let mut scratch = Scratch::new(plant.n_dof);
     let mut y0 = initial_state(&plant)?;
     // A model linear about its static state starts on its linear periodic state: settling
     // then only removes what the time domain adds to it ([`super::periodic_start`]).
@@ -215,7 +216,7 @@ fn run_recorded(
     }
     let mut solver = {
         let mut rhs =
-            |t: f64, y: &[f64], dy: &mut [f64]| plant.derivatives(t, y, dy, &profile, &mut mass);
+            |t: f64, y: &[f64], dy: &mut [f64]| plant.derivatives(t, y, dy, &profile, &mut scratch);
         let implicit = match options.method {
             Method::Implicit => true,
             Method::Explicit | Method::Exact => false,
@@ -264,14 +265,14 @@ fn run_recorded(
     };
     let settling = settle(
         course,
-        &mut mass,
+        &mut scratch,
         &mut solver,
         cycle_s(from_rpm),
         rule,
         &mut |f| observer(Event::Progress(f)),
     )?;
     if options.hold_s > 0.0 {
-        hold(course, &mut mass, &mut solver, options.hold_s)?;
+        hold(course, &mut scratch, &mut solver, options.hold_s)?;
     }
     let t0 = solver.t();
     if run.is_ramp() {
@@ -296,7 +297,7 @@ fn run_recorded(
                 budget: &budget,
             };
             let mut rhs = |t: f64, y: &[f64], dy: &mut [f64]| {
-                plant.derivatives(t, y, dy, &profile, &mut mass)
+                plant.derivatives(t, y, dy, &profile, &mut scratch)
             };
             checked_step(course, &mut solver, t_end + 1.0 / options.rate_hz, &mut rhs)?;
         }

@@ -7,6 +7,7 @@
 
 use super::TransientError;
 use super::budget::{StepBudget, check_state, name_collapse};
+use super::forces::Scratch;
 use super::plant::Plant;
 use super::speed::SpeedProfile;
 use super::stepper::Stepper;
@@ -55,7 +56,7 @@ pub(super) struct Course<'a> {
 /// J/K) settled in 13 s and started 15 K warm, with twice the order-2 amplitude.
 pub(super) fn settle(
     course: Course,
-    mass: &mut [f64],
+    scratch: &mut Scratch,
     solver: &mut Stepper,
     cycle_s: f64,
     rule: SettleRule,
@@ -65,7 +66,7 @@ pub(super) fn settle(
     let n = plant.n_dof;
     let held = plant.thermal_states();
     let mut rhs = |t: f64, y: &[f64], dy: &mut [f64]| {
-        plant.derivatives(t, y, dy, profile, mass);
+        plant.derivatives(t, y, dy, profile, scratch);
         for &s in &held {
             dy[s] = 0.0;
         }
@@ -112,13 +113,13 @@ pub(super) fn settle(
 /// the start does not depend on how long settling took; the hold is a set time.
 pub(super) fn hold(
     course: Course,
-    mass: &mut [f64],
+    scratch: &mut Scratch,
     solver: &mut Stepper,
     hold_s: f64,
 ) -> Result<(), TransientError> {
     let (plant, profile) = (course.plant, course.profile);
     let t_end = solver.t() + hold_s.max(0.0);
-    let mut rhs = |t: f64, y: &[f64], dy: &mut [f64]| plant.derivatives(t, y, dy, profile, mass);
+    let mut rhs = |t: f64, y: &[f64], dy: &mut [f64]| plant.derivatives(t, y, dy, profile, scratch);
     while solver.t() < t_end - 1e-12 * t_end.max(1.0) {
         checked_step(course, solver, t_end, &mut rhs)?;
     }
