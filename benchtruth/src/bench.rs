@@ -4,7 +4,8 @@
 //! worse than the user's model, and the time per case.
 
 use crate::effects::CLASSES;
-use crate::write::{CaseFiles, write_case};
+use crate::redraw::write_case;
+use crate::write::CaseFiles;
 use serde_json::Value;
 use std::fmt::Write as _;
 use std::path::Path;
@@ -109,6 +110,9 @@ pub struct Row {
     /// the largest fraction of samples inside a gear's play, or the largest secant
     /// stiffening of an amplitude law); `None` for the classes not measured.
     pub exercised: Option<f64>,
+    /// Which draw of the seed was diagnosed: 0, or a redraw after draws no bench could
+    /// run ([`crate::redraw::MAX_DRAWS`]).
+    pub draw: u64,
 }
 
 /// Draws and diagnoses the case of `seed` in `dir`.
@@ -122,6 +126,7 @@ pub fn run_case(torsim: &Path, seed: u64, dir: &Path) -> Row {
                 outcome: Err(format!("draw: {e}")),
                 seconds: 0.0,
                 exercised: None,
+                draw: 0,
             };
         }
     };
@@ -155,6 +160,7 @@ pub fn run_case(torsim: &Path, seed: u64, dir: &Path) -> Row {
         outcome,
         seconds,
         exercised: crate::exercise::Exercise::headline(&all),
+        draw: files.draw,
     }
 }
 
@@ -225,9 +231,10 @@ pub fn summary(rows: &[Row], first: u64, last: u64) -> String {
     times.sort_by(f64::total_cmp);
     let median = times.get(times.len() / 2).copied().unwrap_or(0.0);
     let max = times.last().copied().unwrap_or(0.0);
+    let redrawn = rows.iter().filter(|r| r.draw > 0).count();
     let _ = writeln!(
         s,
-        "\nOverall right: {right_all}/{} ({:.0} %). False physics on controls: {false_physics}. Held-out fit worse than the user's model: {worse}. Errors: {errors}. Diagnosis time per case: median {median:.1} s, max {max:.1} s.",
+        "\nOverall right: {right_all}/{} ({:.0} %). False physics on controls: {false_physics}. Held-out fit worse than the user's model: {worse}. Errors: {errors}. Seeds drawn again because no bench could run the first draw: {redrawn}. Diagnosis time per case: median {median:.1} s, max {max:.1} s.",
         rows.len(),
         100.0 * right_all as f64 / rows.len().max(1) as f64
     );
@@ -258,7 +265,7 @@ fn verdict_of(r: &Row) -> String {
 /// measured.
 pub fn results_csv(rows: &[Row]) -> String {
     let mut s = String::from(
-        "seed,truth,form,verdict,right,place,fit_before,fit_after,seconds,error,exercised\n",
+        "seed,truth,form,verdict,right,place,fit_before,fit_after,seconds,error,exercised,draw\n",
     );
     for r in rows {
         let num = |x: Option<f64>| x.map_or(String::new(), |v| format!("{v}"));
@@ -268,7 +275,7 @@ pub fn results_csv(rows: &[Row]) -> String {
                 let place = o.place.map_or("", Place::word);
                 let _ = writeln!(
                     s,
-                    "{},{},{},{},{},{place},{},{},{:.2},,{exercised}",
+                    "{},{},{},{},{},{place},{},{},{:.2},,{exercised},{}",
                     r.seed,
                     o.truth,
                     r.form,
@@ -276,18 +283,20 @@ pub fn results_csv(rows: &[Row]) -> String {
                     o.right,
                     num(o.fit_before),
                     num(o.fit_after),
-                    r.seconds
+                    r.seconds,
+                    r.draw
                 );
             }
             Err(e) => {
                 let _ = writeln!(
                     s,
-                    "{},{},{},error,false,,,,{:.2},\"{}\",{exercised}",
+                    "{},{},{},error,false,,,,{:.2},\"{}\",{exercised},{}",
                     r.seed,
                     class_of_row(r),
                     r.form,
                     r.seconds,
-                    e.replace('"', "'")
+                    e.replace('"', "'"),
+                    r.draw
                 );
             }
         }
@@ -308,6 +317,7 @@ mod tests {
             form: "pressure_scale".into(),
             place: Some(("cylinder".into(), vec!["6".into()])),
             exercise: Vec::new(),
+            draw: 0,
         }
     }
 

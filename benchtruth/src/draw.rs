@@ -28,6 +28,17 @@ pub struct Case {
     /// First-mode damping ratio drawn.
     pub zeta1: f64,
     pub modes_hz: Vec<f64>,
+    /// Which draw of the seed this is: 0, or the redraw after earlier draws whose truth no
+    /// bench could run ([`crate::redraw::write_case`]). Each draw has its own random streams
+    /// ([`stream`]), so draw 0 of a seed is the same case whatever the redraw rule.
+    pub attempt: u64,
+}
+
+/// The random stream `base` of draw `attempt` of a seed: draw 0 keeps the streams every
+/// earlier build used (1 the driveline and effect, 2 the campaign, 100 + i recording
+/// i's noise), a redraw moves all of them by 2²⁰ per attempt.
+pub fn stream(base: u64, attempt: u64) -> u64 {
+    base + (attempt << 20)
 }
 
 /// The class drawn for a seed when none is forced: `seed mod 11`.
@@ -264,6 +275,11 @@ pub fn through_torque(d: &Driveline, c: usize) -> f64 {
 
 /// Draws the case of `seed`; `class` forces the effect class.
 pub fn draw_case(seed: u64, class: Option<&str>) -> Result<Case, String> {
+    draw_attempt(seed, class, 0)
+}
+
+/// Draw `attempt` of a seed ([`Case::attempt`]); [`draw_case`] is draw 0.
+pub fn draw_attempt(seed: u64, class: Option<&str>, attempt: u64) -> Result<Case, String> {
     let class = class.unwrap_or(class_of(seed)).to_string();
     if !CLASSES.contains(&class.as_str()) {
         return Err(format!(
@@ -271,7 +287,7 @@ pub fn draw_case(seed: u64, class: Option<&str>) -> Result<Case, String> {
             CLASSES.join(", ")
         ));
     }
-    let mut rng = Rng::new(seed, 1);
+    let mut rng = Rng::new(seed, stream(1, attempt));
     let six = class == "cylinder_imbalance" || rng.chance(0.5);
     let gear = class == "gear_backlash" || rng.chance(0.4);
     let extra = (class == "unmodelled_mode") as usize;
@@ -556,7 +572,7 @@ pub fn draw_case(seed: u64, class: Option<&str>) -> Result<Case, String> {
         nodes: (0..n_user).collect(),
         crank: truth.engine.node,
     };
-    let mut crng = Rng::new(seed, 2);
+    let mut crng = Rng::new(seed, stream(2, attempt));
     let campaign = campaign::draw(&mut crng, &needs);
     if class == "sensor_artifact" {
         let s = rng.int(0, campaign.stations.len() - 1);
@@ -604,6 +620,7 @@ pub fn draw_case(seed: u64, class: Option<&str>) -> Result<Case, String> {
         campaign,
         zeta1,
         modes_hz: modes.freq_hz.clone(),
+        attempt,
     };
     crate::sizing::size_effect(&mut case, &mut rng);
     Ok(case)

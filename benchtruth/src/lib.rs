@@ -18,6 +18,7 @@ pub mod fitpoints;
 pub mod integrate;
 pub mod nnls;
 pub mod plant;
+pub mod redraw;
 pub mod rng;
 pub mod sim;
 pub mod sizing;
@@ -25,4 +26,5 @@ pub mod visco;
 pub mod write;
 
 pub use bench::{Outcome, score};
-pub use write::{CaseFiles, WriteError, write_case};
+pub use redraw::write_case;
+pub use write::{CaseFiles, WriteError};

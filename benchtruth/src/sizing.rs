@@ -12,14 +12,16 @@ use crate::sim;
 pub fn size_effect(case: &mut Case, rng: &mut Rng) {
     match case.effect.clone() {
         Effect::ThermalDrift { conn, law } => {
-            let rec = case
+            let Some(long) = case
                 .campaign
                 .recordings
                 .iter()
-                .find(|r| r.stem == "long-run")
-                .cloned();
-            let Some(rec) = rec else { return };
-            let loss_w = pre_run(case, conn, &rec).loss_w;
+                .position(|r| r.stem == "long-run")
+            else {
+                return;
+            };
+            let loss_w = heat_run(case, conn, long);
+            let rec = case.campaign.recordings[long].clone();
             let drop = rng.range(0.03, 0.08);
             let dt_k = match law.softening {
                 Softening::Exponential { beta_per_k } => -(1.0 - drop).ln() / beta_per_k,
@@ -74,6 +76,34 @@ pub fn size_effect(case: &mut Case, rng: &mut Rng) {
     }
 }
 
+/// The heat run: a test engineer who looks for a coupling's thermal drift runs the long
+/// run where the coupling works hardest, so the long run moves to the speed of the
+/// full-load regime where connection `conn` loses most (a pre-run of each), and returns
+/// that loss, W. The heat balance sized on it then warms no steady regime more than the
+/// long run. Sized on a long run drawn anywhere in the range, as before 2026-12-03, a
+/// regime at a resonance lost up to 300 times the long run's power into a capacity sized
+/// for the long run: development seed 2116's `regime-b` would have risen 970 K in its
+/// 14 s (467 W into 3.7 J/K), seed 2127's `regime-a` 360 K, a coupling far past any
+/// rubber's service temperature, while the long run drifted too little to be seen.
+fn heat_run(case: &mut Case, conn: usize, long: usize) -> f64 {
+    let hottest = case
+        .campaign
+        .recordings
+        .iter()
+        .filter(|r| !r.run_up && r.stem != "long-run" && r.load == 1.0)
+        .map(|r| (r.from_rpm, pre_run(case, conn, r).loss_w))
+        .max_by(|a, b| a.1.total_cmp(&b.1));
+    match hottest {
+        Some((speed_rpm, loss_w)) => {
+            let rec = &mut case.campaign.recordings[long];
+            rec.from_rpm = speed_rpm;
+            rec.to_rpm = speed_rpm;
+            loss_w
+        }
+        None => pre_run(case, conn, &case.campaign.recordings[long]).loss_w,
+    }
+}
+
 /// What the pre-run without the effect measures at one connection.
 struct PreRun {
     /// Mean rubber loss power, W.
@@ -121,6 +151,36 @@ fn pre_run(case: &Case, conn: usize, rec: &crate::campaign::Recording) -> PreRun
 mod tests {
     use crate::effects::{Effect, HystereticLaw};
     use crate::sim;
+
+    /// Development seed 2116's heat balance, sized on a long run drawn at 1920 rpm
+    /// (1.6 W), would have warmed `regime-b` at 1360 rpm (467 W) by 970 K. Sized on the
+    /// heat run, no full-load steady regime loses more than the long run, so none warms
+    /// more than the long run's drift asks for.
+    #[test]
+    fn the_heat_run_is_the_hottest_full_load_regime() {
+        let case = crate::draw::draw_case(2116, None).unwrap();
+        let Effect::ThermalDrift { conn, law } = case.effect.clone() else {
+            panic!("seed 2116 draws thermal drift: {:?}", case.effect);
+        };
+        let recs = &case.campaign.recordings;
+        let long = recs.iter().find(|r| r.stem == "long-run").unwrap();
+        let long_w = super::pre_run(&case, conn, long).loss_w;
+        let mut regimes = 0;
+        for r in recs.iter().filter(|r| !r.run_up && r.load == 1.0) {
+            let w = super::pre_run(&case, conn, r).loss_w;
+            assert!(
+                w <= long_w * (1.0 + 1e-9),
+                "{} loses {w} W, the long run {long_w} W",
+                r.stem
+            );
+            regimes += 1;
+        }
+        assert!(regimes >= 3, "{regimes} full-load regimes");
+        // The asymptotic rise of the hottest regime: the long run's, P/G.
+        let rise_k = long_w / law.conductance_w_per_k;
+        let drop = 1.0 - law.softening.factor(rise_k);
+        assert!(drop < 0.5, "the hottest regime would soften by {drop}");
+    }
 
     /// Seed 16 (Dahl friction) diverged at the start of `regime-b` while the RK4 step
     /// ignored the friction state's relaxation rate σ·|Δθ̇|/F_c. Sized now, the plant's

@@ -2,7 +2,7 @@
 //! the recordings (recording-format.md: CSV with `time_s` to the microsecond and a TOML
 //! sidecar), and `truth.toml`, which only the scorer reads. TOML is written by hand.
 
-use crate::draw::{Case, draw_case};
+use crate::draw::{Case, stream};
 use crate::driveline::{Driveline, Kind};
 use crate::effects::{Effect, SensorLaw};
 use crate::exercise::{Exercise, Meter};
@@ -17,6 +17,10 @@ use std::path::{Path, PathBuf};
 pub enum WriteError {
     #[error("{0}")]
     Draw(String),
+    /// The drawn truth is one no bench could run (it diverged, or a node turned
+    /// backwards): [`crate::redraw::write_case`] draws the seed again.
+    #[error("{0}")]
+    Unusable(String),
     #[error("writing {path}: {source}")]
     Io {
         path: PathBuf,
@@ -37,6 +41,8 @@ pub struct CaseFiles {
     /// What each recording exercised of the effect (file stem, measure), for the classes
     /// [`crate::exercise`] measures.
     pub exercise: Vec<(String, Exercise)>,
+    /// Which draw of the seed was written ([`crate::draw::Case::attempt`]).
+    pub draw: u64,
 }
 
 fn put(path: &Path, text: &str) -> Result<(), WriteError> {
@@ -161,7 +167,7 @@ fn measured_rpm(law: Option<&SensorLaw>, theta: f64, omega: f64, sample_s: f64) 
 
 /// One recording simulated, not yet written: CSV and sidecar texts, and what it
 /// exercised of the effect.
-struct Simulated {
+pub(crate) struct Simulated {
     stem: String,
     csv: String,
     sidecar: String,
@@ -174,7 +180,7 @@ fn simulate_recording(case: &Case, idx: usize) -> Result<Simulated, WriteError> 
     let rec = &case.campaign.recordings[idx];
     let c = &case.campaign;
     let plant = sim::plant_for(case, rec);
-    let mut rng = Rng::new(case.seed, 100 + idx as u64);
+    let mut rng = Rng::new(case.seed, stream(100 + idx as u64, case.attempt));
     let artifact = match &case.effect {
         Effect::SensorArtifact { station, law } => Some((*station, *law)),
         _ => None,
@@ -223,17 +229,16 @@ fn simulate_recording(case: &Case, idx: usize) -> Result<Simulated, WriteError> 
         csv.push('\n');
     });
     if let Some(t) = diverged_s {
-        return Err(WriteError::Draw(format!(
-            "seed {}: the bench's truth diverged in `{}` at {t:.4} s ({} form): the case is not usable \
-             and counts as a bench error",
-            case.seed, rec.stem, case.form
+        return Err(WriteError::Unusable(format!(
+            "seed {} draw {}: the bench's truth diverged in `{}` at {t:.4} s ({} form)",
+            case.seed, case.attempt, rec.stem, case.form
         )));
     }
     if let Some((t, i)) = reversed {
-        return Err(WriteError::Draw(format!(
-            "seed {}: node `{}` turns backwards in `{}` at {t:.4} s: no running bench does that \
-             (an engine would stall), so the case is not usable and counts as a bench error",
-            case.seed, case.truth.nodes[i].name, rec.stem
+        return Err(WriteError::Unusable(format!(
+            "seed {} draw {}: node `{}` turns backwards in `{}` at {t:.4} s: no running bench \
+             does that (an engine would stall)",
+            case.seed, case.attempt, case.truth.nodes[i].name, rec.stem
         )));
     }
     let mut side = format!(
@@ -263,10 +268,16 @@ fn simulate_recording(case: &Case, idx: usize) -> Result<Simulated, WriteError> 
 
 /// `truth.toml`: effect, form, parameters, place, errors, campaign, seed, and what each
 /// recording exercised (`exercise`).
-fn truth_toml(case: &Case, exercise: &[(String, Exercise)]) -> String {
+fn truth_toml(case: &Case, exercise: &[(String, Exercise)], unusable: &[String]) -> String {
+    let redrawn: Vec<String> = unusable
+        .iter()
+        .map(|u| format!("\"{}\"", u.replace('"', "'")))
+        .collect();
     let mut s = format!(
-        "# The truth of this benchtruth case; torsim never reads it.\nformat = 1\nseed = {}\neffect = \"{}\"\nform = \"{}\"\nfirst_mode_damping = {}\nmodes_hz = [{}]\n",
+        "# The truth of this benchtruth case; torsim never reads it.\nformat = 1\nseed = {}\ndraw = {}\nredrawn_because = [{}]\neffect = \"{}\"\nform = \"{}\"\nfirst_mode_damping = {}\nmodes_hz = [{}]\n",
         case.seed,
+        case.attempt,
+        redrawn.join(", "),
         case.class,
         case.form,
         case.zeta1,
@@ -304,15 +315,11 @@ fn truth_toml(case: &Case, exercise: &[(String, Exercise)]) -> String {
     s
 }
 
-/// Draws the case of `seed` (class forced or `seed mod 11`) and writes it into `dir`.
-pub fn write_case(seed: u64, class: Option<&str>, dir: &Path) -> Result<CaseFiles, WriteError> {
-    let case = draw_case(seed, class).map_err(WriteError::Draw)?;
+/// Simulates every recording of `case`, in parallel; nothing is written.
+pub(crate) fn simulate_case(case: &Case) -> Result<Vec<Simulated>, WriteError> {
     let results: Vec<Result<Simulated, WriteError>> = std::thread::scope(|s| {
         let handles: Vec<_> = (0..case.campaign.recordings.len())
-            .map(|i| {
-                let case = &case;
-                s.spawn(move || simulate_recording(case, i))
-            })
+            .map(|i| s.spawn(move || simulate_recording(case, i)))
             .collect();
         handles
             .into_iter()
@@ -323,8 +330,17 @@ pub fn write_case(seed: u64, class: Option<&str>, dir: &Path) -> Result<CaseFile
             })
             .collect()
     });
-    let simulated = results.into_iter().collect::<Result<Vec<_>, _>>()?;
-    // Every recording simulated: only now is anything written.
+    results.into_iter().collect()
+}
+
+/// Writes a case whose every recording simulated; `unusable` are the earlier draws of its
+/// seed that no bench could run, kept in `truth.toml`.
+pub(crate) fn write_simulated(
+    case: &Case,
+    simulated: Vec<Simulated>,
+    unusable: &[String],
+    dir: &Path,
+) -> Result<CaseFiles, WriteError> {
     std::fs::create_dir_all(dir).map_err(|source| WriteError::Io {
         path: dir.to_path_buf(),
         source,
@@ -345,7 +361,7 @@ pub fn write_case(seed: u64, class: Option<&str>, dir: &Path) -> Result<CaseFile
         }
     }
     let truth = dir.join("truth.toml");
-    put(&truth, &truth_toml(&case, &exercise))?;
+    put(&truth, &truth_toml(case, &exercise, unusable))?;
     Ok(CaseFiles {
         model,
         recordings,
@@ -354,5 +370,6 @@ pub fn write_case(seed: u64, class: Option<&str>, dir: &Path) -> Result<CaseFile
         form: case.form.clone(),
         place: case.place.clone(),
         exercise,
+        draw: case.attempt,
     })
 }

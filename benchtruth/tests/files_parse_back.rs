@@ -98,23 +98,30 @@ fn a_none_control_parses_back_and_holds_its_speeds() {
     check_case(0, Some("none"));
 }
 
-/// A draw where a node turns backwards is refused as the bench's own failure, naming the
-/// seed and the recording: an engine would stall there. Seed 100585 (a published case,
-/// fixed here as a bench's regression, not a diagnosis' test) reached −56 rpm at the
-/// crank in its run-up. Nothing is written: not even the model.
+/// A draw where a node turns backwards is no bench (an engine would stall there), so the
+/// seed is drawn again and the set-aside draw is named in `truth.toml`. Seed 100585 (a
+/// published case, fixed here as a bench's regression, not a diagnosis' test) reached
+/// −56 rpm at the crank in its first draw's run-up.
 #[test]
-fn a_crank_that_turns_backwards_is_no_bench() {
+fn a_crank_that_turns_backwards_is_drawn_again() {
     let dir = tempfile::Builder::new()
         .prefix("benchtruth-backwards-")
         .tempdir()
         .expect("temp dir");
-    let e = benchtruth::write_case(100_585, None, dir.path())
-        .expect_err("refused")
-        .to_string();
-    assert!(
-        e.contains("seed 100585") && e.contains("`crank` turns backwards") && e.contains("run-up"),
-        "{e}"
+    let files = benchtruth::write_case(100_585, None, dir.path()).expect("redrawn");
+    assert!(files.draw >= 1, "draw {}", files.draw);
+    let truth = std::fs::read_to_string(&files.truth).expect("truth.toml");
+    assert_eq!(
+        sidecar_value(&truth, "draw"),
+        Some(files.draw.to_string()),
+        "{truth}"
     );
-    let left = std::fs::read_dir(dir.path()).expect("readable").count();
-    assert_eq!(left, 0, "a failed draw wrote {left} files");
+    let first = sidecar_value(&truth, "redrawn_because").expect("redrawn_because");
+    assert_eq!(first.matches("seed 100585 draw").count() as u64, files.draw);
+    assert!(
+        first.contains("seed 100585 draw 0")
+            && first.contains("`crank` turns backwards")
+            && first.contains("run-up"),
+        "{first}"
+    );
 }
