@@ -199,7 +199,10 @@ pub fn candidates(model: &Model, stations: &[String], long_run: bool) -> Vec<Can
                         // that warms a stage visibly needs a small capacity, and the
                         // independent bench sizes its stages' capacities so (0.18 to
                         // 157 J/K in its draws; 0.18 is 0.46 in this −1.33 %/K law).
-                        Param::new("capacity_j_per_k", 300.0, 0.01, 1.0e5, true)
+                        // Its start, 300 J/K, is moved to the stage's loss in the
+                        // heat run where there is one ([`super::thermal_start`]); its
+                        // upper bound, 10⁷ J/K, is above any coupling's rubber.
+                        Param::new("capacity_j_per_k", 300.0, 0.01, 1.0e7, true)
                             .searched_past_grid()
                             .verified(Verification::Always),
                     );

@@ -102,6 +102,7 @@ mod tests_rejected;
 mod tests_sensor_gain;
 #[cfg(test)]
 mod tests_verify;
+pub mod thermal_start;
 pub mod trial;
 mod unsimulable;
 pub mod verify;

@@ -10,10 +10,13 @@
 //! The list is the candidates of [`super::candidates::candidates`] (one set per
 //! connection and engine, the sensor artifacts at the measured stations), then the
 //! thermal candidates again with the long runs' heat time constant, then a local mode
-//! hanging on every node ([`super::branch::branch_candidates`]).
+//! hanging on every node ([`super::branch::branch_candidates`]); the thermal candidates'
+//! heat capacities start from the stage's loss in the heat run
+//! ([`super::thermal_start`]).
 
 use super::candidates::{Candidate, candidates};
 use super::observe::{Observed, RunShape};
+use super::thermal_start::{HeatRun, start_capacities};
 use crate::model::Model;
 
 /// What a campaign tells the candidate list: which forms it can show.
@@ -30,6 +33,9 @@ pub struct Campaign {
     /// The band (Hz) the campaign excites ([`super::branch::excited_band_hz`]), over
     /// which a local mode's frequency is fitted; `None`: no branch candidate.
     pub band_hz: Option<[f64; 2]>,
+    /// The longest long run, where the thermal candidates' heat capacities start
+    /// ([`super::thermal_start`]); `None`: they start at their fixed value.
+    pub heat_run: Option<HeatRun>,
 }
 
 impl Campaign {
@@ -50,6 +56,7 @@ impl Campaign {
                 .any(|r| matches!(r.regime, RunShape::LongRun { .. })),
             time_constant_s: super::drift::long_run_time_constant(observed),
             band_hz: super::branch::excited_band_hz(observed),
+            heat_run: HeatRun::of(observed),
         }
     }
 
@@ -62,6 +69,7 @@ impl Campaign {
             long_run: true,
             time_constant_s: Some(100.0),
             band_hz: Some([1.0, 1.0e4]),
+            heat_run: None,
         }
     }
 }
@@ -77,6 +85,10 @@ pub fn searched(model: &Model, campaign: &Campaign) -> Vec<Candidate> {
     // The branch form of `unmodelled_mode`: a local mode hanging on any node.
     if let Some(band) = campaign.band_hz {
         list.extend(super::branch::branch_candidates(model, band));
+    }
+    // Heat capacities from the stage's loss in the heat run.
+    if let Some(heat) = &campaign.heat_run {
+        start_capacities(&mut list, model, heat);
     }
     list
 }

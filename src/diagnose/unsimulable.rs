@@ -175,7 +175,7 @@ mod tests {
     /// with torsim): its user's model stalls at Regime A (order 1.5 on its 28.6 Hz first
     /// mode at ζ = 0.54 %) and runs at Regimes C and D.
     fn case_100548(dir: &std::path::Path) -> (Model, Vec<crate::diagnose::LabelledRecording>) {
-        let files = benchtruth::write::write_case(100548, None, dir).expect("case 100548");
+        let files = benchtruth::write_case(100548, None, dir).expect("case 100548");
         let text = std::fs::read_to_string(&files.model).expect("model.toml");
         let model = crate::model::parse_model(&text, "model.toml").expect("model parses");
         let nodes: Vec<String> = model.inertias.iter().map(|n| n.name.clone()).collect();
