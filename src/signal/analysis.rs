@@ -5,6 +5,7 @@
 
 use std::collections::BTreeMap;
 
+use super::antialias::{self, LowPass};
 use super::orders::{self, OrderAmplitude, OrderSpectrum};
 use super::resample::{self, AngleGrid, Interpolation};
 use super::stft::{self, Frames};
@@ -220,6 +221,25 @@ pub fn analyse_with(
         .map(|(_, v)| &v[..])
         .chain(signals.iter().map(|(_, v, _)| &v[..]))
         .collect();
+    // A steady record sampled faster than the angle grid is low-passed first, so its
+    // high orders do not fold onto the low ones ([`super::antialias`]); a run-up's
+    // order tracks come from its time samples ([`stft`]).
+    let low_rpm = reference.iter().fold(f64::INFINITY, |a, &b| a.min(b));
+    let low_pass = match meta.kind {
+        RunKind::Steady => LowPass::new(
+            antialias::grid_nyquist_hz(options.samples_per_rev, low_rpm),
+            cx.grid.dt_s,
+        ),
+        RunKind::RunUp => None,
+    };
+    let filtered: Vec<Vec<f64>> = match &low_pass {
+        Some(f) => all.iter().map(|s| f.apply(s)).collect(),
+        None => Vec::new(),
+    };
+    let all: Vec<&[f64]> = match low_pass {
+        Some(_) => filtered.iter().map(Vec::as_slice).collect(),
+        None => all,
+    };
     let angles = resample::resample_many(&cx.grid, &all, options.interpolation);
     let mut angles = angles.into_iter();
     let mut stations = Vec::with_capacity(stations_in.len());

@@ -16,7 +16,7 @@ const BETA: f64 = 10.0;
 const RESOLUTION: usize = 2048;
 
 /// Modified Bessel function of the first kind, order 0 (power series).
-fn bessel_i0(x: f64) -> f64 {
+pub(super) fn bessel_i0(x: f64) -> f64 {
     let q = x * x / 4.0;
     let (mut term, mut sum) = (1.0, 1.0);
     for k in 1..60 {

@@ -5,6 +5,7 @@
 //! of run-ups with order tracks ([`stft`]). [`analyse`] does it all for a recording.
 
 pub mod analysis;
+pub mod antialias;
 pub mod kernel;
 pub mod orders;
 pub mod resample;
