@@ -6,6 +6,7 @@
 use std::collections::BTreeMap;
 
 use super::antialias::{self, LowPass};
+use super::kernel::HALF_WIDTH;
 use super::orders::{self, OrderAmplitude, OrderSpectrum};
 use super::resample::{self, AngleGrid, Interpolation};
 use super::stft::{self, Frames};
@@ -151,12 +152,39 @@ pub fn analyse_with(
         .speed_rpm(&meta.reference)
         .ok_or_else(|| SignalError::MissingReference(meta.reference.clone()))?;
     let cycle_rev = meta.cycle_rev();
-    let grid = resample::angle_grid(
-        &recording.time_s,
-        reference,
-        options.samples_per_rev,
-        cycle_rev,
-    )?;
+    // A steady record sampled faster than the angle grid is low-passed first, so its
+    // high orders do not fold onto the low ones ([`super::antialias`]); the grid then
+    // keeps the filter's half-width clear of the ends, where it is exact. A record too
+    // short for that margin is analysed unfiltered. A run-up's order tracks come from its
+    // time samples ([`stft`]).
+    let low_pass = match meta.kind {
+        RunKind::Steady => resample::uniform_interval(&recording.time_s)
+            .ok()
+            .and_then(|dt| {
+                let low_rpm = reference.iter().fold(f64::INFINITY, |a, &b| a.min(b));
+                LowPass::new(
+                    antialias::grid_nyquist_hz(options.samples_per_rev, low_rpm),
+                    dt,
+                )
+            }),
+        RunKind::RunUp => None,
+    };
+    let within = |margin: usize| {
+        resample::angle_grid_within(
+            &recording.time_s,
+            reference,
+            options.samples_per_rev,
+            cycle_rev,
+            margin,
+        )
+    };
+    let (grid, low_pass) = match low_pass {
+        Some(f) => match within(HALF_WIDTH + f.half_width()) {
+            Ok(grid) => (grid, Some(f)),
+            Err(_) => (within(HALF_WIDTH)?, None),
+        },
+        None => (within(HALF_WIDTH)?, None),
+    };
     let top_rpm = reference.iter().fold(0.0_f64, |a, &b| a.max(b));
     let step = 1.0 / cycle_rev;
     let measurable = 0.4 / grid.dt_s * 60.0 / top_rpm;
@@ -221,17 +249,6 @@ pub fn analyse_with(
         .map(|(_, v)| &v[..])
         .chain(signals.iter().map(|(_, v, _)| &v[..]))
         .collect();
-    // A steady record sampled faster than the angle grid is low-passed first, so its
-    // high orders do not fold onto the low ones ([`super::antialias`]); a run-up's
-    // order tracks come from its time samples ([`stft`]).
-    let low_rpm = reference.iter().fold(f64::INFINITY, |a, &b| a.min(b));
-    let low_pass = match meta.kind {
-        RunKind::Steady => LowPass::new(
-            antialias::grid_nyquist_hz(options.samples_per_rev, low_rpm),
-            cx.grid.dt_s,
-        ),
-        RunKind::RunUp => None,
-    };
     let filtered: Vec<Vec<f64>> = match &low_pass {
         Some(f) => all.iter().map(|s| f.apply(s)).collect(),
         None => Vec::new(),

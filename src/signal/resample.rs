@@ -120,12 +120,32 @@ pub fn angle_grid(
     samples_per_rev: usize,
     cycle_rev: f64,
 ) -> Result<AngleGrid, SignalError> {
+    angle_grid_within(
+        time_s,
+        reference_rpm,
+        samples_per_rev,
+        cycle_rev,
+        HALF_WIDTH,
+    )
+}
+
+/// [`angle_grid`] keeping `margin` samples (at least the kernel's [`HALF_WIDTH`]) clear
+/// of either end: a signal low-passed first ([`super::antialias`]) is exact only where
+/// the filter had samples on both sides.
+pub fn angle_grid_within(
+    time_s: &[f64],
+    reference_rpm: &[f64],
+    samples_per_rev: usize,
+    cycle_rev: f64,
+    margin: usize,
+) -> Result<AngleGrid, SignalError> {
+    let margin = margin.max(HALF_WIDTH);
     let n = time_s.len();
-    if n < 2 * HALF_WIDTH + 2 {
+    if n < 2 * margin + 2 {
         return Err(SignalError::TooFewSamples {
             samples: n,
-            needed: 2 * HALF_WIDTH + 2,
-            margin: HALF_WIDTH,
+            needed: 2 * margin + 2,
+            margin,
         });
     }
     let dt = uniform_interval(time_s)?;
@@ -136,7 +156,7 @@ pub fn angle_grid(
         return Err(SignalError::NonPositiveSpeed { time_s: time_s[k] });
     }
     let theta = reference_angle_rev(reference_rpm, dt);
-    let (lo, hi) = (theta[HALF_WIDTH], theta[n - 1 - HALF_WIDTH]);
+    let (lo, hi) = (theta[margin], theta[n - 1 - margin]);
     let samples_per_cycle = (samples_per_rev as f64 * cycle_rev).round() as usize;
     // Bounded before allocating (issue 13): one over-range speed sample must not ask for
     // terabytes. Checked on the angle itself, which is finite or not, before any cast.
@@ -157,13 +177,13 @@ pub fn angle_grid(
         return Err(SignalError::TooShort {
             cycles: ((hi - lo) / cycle_rev).max(0.0),
             needed: (start_rev + cycle_rev - lo) / cycle_rev,
-            margin: HALF_WIDTH,
+            margin,
         });
     }
     let cycles = cycles_f as usize;
     let total = cycles * samples_per_cycle;
     let mut positions = Vec::with_capacity(total);
-    let mut k = HALF_WIDTH;
+    let mut k = margin;
     for i in 0..total {
         let target = start_rev + (i as f64) * cycle_rev / samples_per_cycle as f64;
         while k + 2 < n && theta[k + 1] <= target {
