@@ -93,6 +93,9 @@ pub fn diagnose(
         // the user's 30.8, and the plain parameters stayed at 1).
         if refit.best.factors != baseline.factors {
             fitted = refit;
+        } else {
+            // Its rejected steps are still reported (issue 14, item 2).
+            fitted.rejected.extend(refit.rejected);
         }
     }
     let cx = cx;

@@ -249,12 +249,10 @@ pub fn analyse_with(
         .map(|(_, v)| &v[..])
         .chain(signals.iter().map(|(_, v, _)| &v[..]))
         .collect();
-    let filtered: Vec<Vec<f64>> = match &low_pass {
-        Some(f) => all.iter().map(|s| f.apply(s)).collect(),
-        None => Vec::new(),
-    };
-    let all: Vec<&[f64]> = match low_pass {
-        Some(_) => filtered.iter().map(Vec::as_slice).collect(),
+    let filtered: Option<Vec<Vec<f64>>> =
+        low_pass.map(|f| all.iter().map(|s| f.apply(s)).collect());
+    let all: Vec<&[f64]> = match &filtered {
+        Some(f) => f.iter().map(Vec::as_slice).collect(),
         None => all,
     };
     let angles = resample::resample_many(&cx.grid, &all, options.interpolation);

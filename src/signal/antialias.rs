@@ -15,7 +15,8 @@
 //! revolution). The bench's own recording at 2560 Hz folded too, less (order 5.5 at
 //! 0.0020 rpm on 64 points, 0.0007 on 256).
 //!
-//! The filter: a Kaiser-windowed sinc (β = [`BETA`], about 100 dB of stopband), linear
+//! The filter: a sinc in the interpolation kernel's Kaiser window ([`super::kernel`],
+//! β = 10, about 100 dB of stopband), linear
 //! phase, half-amplitude at the grid's Nyquist frequency at the record's lowest speed
 //! `f_c`. It is flat (within 1e-5) below 0.7 `f_c`, the orders the kernel itself keeps
 //! flat, and stops above 1.3 `f_c`, whose content would fold below 0.7 `f_c`. Its
@@ -28,11 +29,9 @@
 //! IIR sections (not linear phase, so they would shift the order phases) or need a
 //! filter designed elsewhere.
 
-use super::kernel::bessel_i0;
+use super::kernel::kaiser;
 use std::f64::consts::PI;
 
-/// Kaiser window shape parameter (about 100 dB of stopband attenuation).
-const BETA: f64 = 10.0;
 /// Half-width of the filter in samples times the cutoff in cycles per sample (Kaiser's
 /// length `(A − 8) / (2.285 · 2π · Δ)` for A = 100 dB and a transition Δ = 0.6 `f_c Δt`,
 /// halved: 5.3, rounded up).
@@ -74,8 +73,7 @@ impl LowPass {
                 } else {
                     (2.0 * PI * c * x).sin() / (2.0 * PI * c * x)
                 };
-                let r = x / (m + 1.0);
-                sinc * bessel_i0(BETA * (1.0 - r * r).sqrt())
+                sinc * kaiser(x / (m + 1.0))
             })
             .collect();
         let total = taps[0] + 2.0 * taps[1..].iter().sum::<f64>();

@@ -16,7 +16,7 @@ const BETA: f64 = 10.0;
 const RESOLUTION: usize = 2048;
 
 /// Modified Bessel function of the first kind, order 0 (power series).
-pub(super) fn bessel_i0(x: f64) -> f64 {
+fn bessel_i0(x: f64) -> f64 {
     let q = x * x / 4.0;
     let (mut term, mut sum) = (1.0, 1.0);
     for k in 1..60 {
@@ -40,8 +40,14 @@ fn kernel_exact(x: f64) -> f64 {
     } else {
         (std::f64::consts::PI * x).sin() / (std::f64::consts::PI * x)
     };
-    let r = x / m;
-    sinc * bessel_i0(BETA * (1.0 - r * r).sqrt()) / bessel_i0(BETA)
+    sinc * kaiser(x / m)
+}
+
+/// The Kaiser window (shape [`BETA`]) at `r` of its half-width, `|r| ≤ 1`: 1 at the
+/// centre. The interpolation kernel's, and the anti-aliasing low-pass's
+/// ([`super::antialias`]).
+pub(super) fn kaiser(r: f64) -> f64 {
+    bessel_i0(BETA * (1.0 - r * r).sqrt()) / bessel_i0(BETA)
 }
 
 struct Tables {
