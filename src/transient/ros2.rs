@@ -12,7 +12,8 @@
 //! same accuracy (measured: see `RunOptions::method`).
 
 use super::TransientError;
-use nalgebra::{DMatrix, DVector};
+use crate::response::lu::LuWorkspace;
+use nalgebra::DMatrix;
 
 const GAMMA: f64 = 1.0 + std::f64::consts::FRAC_1_SQRT_2;
 /// Accepted steps between Jacobian updates.
@@ -30,7 +31,13 @@ pub struct Ros2 {
     y_prev: Vec<f64>,
     f_prev: Vec<f64>,
     jacobian: DMatrix<f64>,
-    factor: Option<(f64, nalgebra::LU<f64, nalgebra::Dyn, nalgebra::Dyn>)>,
+    /// The step `I − γhJ` was last factored for, s; `None` when it must be (re)factored.
+    factor_h: Option<f64>,
+    /// `I − γhJ` factored in place ([`LuWorkspace::factor`]).
+    factored: DMatrix<f64>,
+    lu: LuWorkspace,
+    k1: Vec<f64>,
+    k2: Vec<f64>,
     since_jacobian: u64,
     /// Proposed next step, s.
     pub h: f64,
@@ -70,7 +77,11 @@ impl Ros2 {
             y: y0,
             f,
             jacobian: DMatrix::zeros(n, n),
-            factor: None,
+            factor_h: None,
+            factored: DMatrix::zeros(n, n),
+            lu: LuWorkspace::default(),
+            k1: vec![0.0; n],
+            k2: vec![0.0; n],
             since_jacobian: JACOBIAN_EVERY,
             h: h0.min(h_max),
             h_max,
@@ -96,7 +107,7 @@ impl Ros2 {
             y[j] = self.y[j];
         }
         self.since_jacobian = 0;
-        self.factor = None;
+        self.factor_h = None;
     }
 
     /// Takes one accepted step, not beyond `t_end`.
@@ -118,38 +129,41 @@ impl Ros2 {
                     state: format!("state #{}", self.worst_state),
                 });
             }
-            let refactor = self
-                .factor
-                .as_ref()
-                .is_none_or(|(h0, _)| (h / h0 - 1.0).abs() > 0.2);
+            let refactor = self.factor_h.is_none_or(|h0| (h / h0 - 1.0).abs() > 0.2);
             if refactor {
-                let m = DMatrix::identity(n, n) - &self.jacobian * (GAMMA * h);
-                self.factor = Some((h, m.lu()));
+                self.factored.copy_from(&self.jacobian);
+                self.factored.scale_mut(-(GAMMA * h));
+                for i in 0..n {
+                    self.factored[(i, i)] += 1.0;
+                }
+                self.lu.factor(&mut self.factored);
+                self.factor_h = Some(h);
             }
             // The factor may belong to a step up to 20 % off: `I − γ·h_lu·J` is `I − γ·h·J'`
             // with `J' = J·h_lu/h`, and a W-method keeps its order for any J'.
-            let Some((_, lu)) = &self.factor else {
-                continue;
-            };
             // The model depends on time (the mean rotation): with t as a state, its column
             // of the Jacobian, ∂f/∂t by a forward difference, enters as ±γh·∂f/∂t.
             // √ε-sized step relative to t, taken as the exactly representable difference.
             let dt = (self.t + 1.5e-8 * self.t.abs().max(1.0)) - self.t;
             rhs(self.t + dt, &self.y, &mut self.scratch);
             let f_t: Vec<f64> = (0..n).map(|i| (self.scratch[i] - self.f[i]) / dt).collect();
-            let rhs1 = DVector::from_iterator(n, (0..n).map(|i| self.f[i] + GAMMA * h * f_t[i]));
-            let k1 = lu
-                .solve(&rhs1)
-                .unwrap_or_else(|| DVector::from_element(n, f64::NAN));
+            let k1 = &mut self.k1;
+            for i in 0..n {
+                k1[i] = self.f[i] + GAMMA * h * f_t[i];
+            }
+            if !self.lu.solve(&self.factored, k1) {
+                k1.fill(f64::NAN);
+            }
             let stage: Vec<f64> = (0..n).map(|i| self.y[i] + h * k1[i]).collect();
             rhs(self.t + h, &stage, &mut self.scratch);
-            let rhs2 = DVector::from_iterator(
-                n,
-                (0..n).map(|i| self.scratch[i] - 2.0 * k1[i] - GAMMA * h * f_t[i]),
-            );
-            let k2 = lu
-                .solve(&rhs2)
-                .unwrap_or_else(|| DVector::from_element(n, f64::NAN));
+            let k2 = &mut self.k2;
+            for i in 0..n {
+                k2[i] = self.scratch[i] - 2.0 * k1[i] - GAMMA * h * f_t[i];
+            }
+            if !self.lu.solve(&self.factored, k2) {
+                k2.fill(f64::NAN);
+            }
+            let (k1, k2) = (&self.k1, &self.k2);
             let mut sum = 0.0;
             let y_new: Vec<f64> = (0..n)
                 .map(|i| self.y[i] + 1.5 * h * k1[i] + 0.5 * h * k2[i])

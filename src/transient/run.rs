@@ -220,7 +220,7 @@ fn run_recorded(
         let implicit = match options.method {
             Method::Implicit => true,
             Method::Explicit | Method::Exact => false,
-            Method::Auto => is_stiff(plant.fastest_rate_rad_s(), h_max),
+            Method::Auto => is_stiff(plant.fastest_rate_rad_s(), h_max, options.rtol),
         };
         if let Some(exact) = exact {
             Stepper::Exact(Box::new(exact))
