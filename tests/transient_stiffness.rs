@@ -21,6 +21,15 @@ fn steps(model: &Model, run: Run, method: Method) -> (u64, u64) {
     sim.steps
 }
 
+/// Steps, accepted and rejected, of `auto`, Dormand–Prince and ROS2 on `run` of `model`.
+fn steps_of_each(model: &Model, run: Run) -> [(u64, u64); 3] {
+    [Method::Auto, Method::Explicit, Method::Implicit].map(|m| steps(model, run, m))
+}
+
+fn total(s: (u64, u64)) -> u64 {
+    s.0 + s.1
+}
+
 /// `genset-20dof` at 1500 rpm: its gear mesh puts a 9.1 kHz mode in it, so the fastest
 /// eigenvalue × largest step is 25, past Dormand–Prince's stability limit (3.3) but far
 /// below where ROS2, of order 2, would catch up. `auto` runs Dormand–Prince, which takes
@@ -34,12 +43,8 @@ fn a_mesh_mode_past_the_explicit_stability_limit_runs_explicit() {
         .find(|p| p.name == "genset-20dof")
         .expect("shipped");
     let model = parse_model(preset.text, "genset-20dof.toml").expect("parses");
-    let run = Run::steady(1500.0, 0.5);
-    let auto = steps(&model, run, Method::Auto);
-    let explicit = steps(&model, run, Method::Explicit);
-    let implicit = steps(&model, run, Method::Implicit);
+    let [auto, explicit, implicit] = steps_of_each(&model, Run::steady(1500.0, 0.5));
     assert_eq!(auto, explicit, "auto took another integrator");
-    let total = |s: (u64, u64)| s.0 + s.1;
     assert!(
         5 * total(explicit) < total(implicit),
         "explicit {explicit:?}, implicit {implicit:?}"
@@ -67,12 +72,8 @@ fn a_mode_far_past_the_explicit_stability_limit_runs_implicit() {
         1,
     );
     let model = parse_model(&text, "stiff.toml").expect("parses");
-    let run = Run::ramp(1500.0, 1600.0, 0.2);
-    let auto = steps(&model, run, Method::Auto);
-    let explicit = steps(&model, run, Method::Explicit);
-    let implicit = steps(&model, run, Method::Implicit);
+    let [auto, explicit, implicit] = steps_of_each(&model, Run::ramp(1500.0, 1600.0, 0.2));
     assert_eq!(auto, implicit, "auto took another integrator");
-    let total = |s: (u64, u64)| s.0 + s.1;
     assert!(
         4 * total(implicit) < total(explicit),
         "explicit {explicit:?}, implicit {implicit:?}"

@@ -164,6 +164,28 @@ mod tests {
             .collect()
     }
 
+    /// Sets entries of `matrix` to exact zeros by `trial`'s pattern: none (dense), all but
+    /// the tridiagonal band (a chain), or off-diagonal ones where `keep` < `share` (a tree).
+    fn sparsify<T: ComplexField + Copy>(
+        matrix: &mut DMatrix<T>,
+        trial: usize,
+        keep: &[f64],
+        share: f64,
+    ) {
+        let n = matrix.nrows();
+        for (index, entry) in matrix.iter_mut().enumerate() {
+            let (row, col) = (index % n, index / n);
+            let zero = match trial % 3 {
+                0 => false,
+                1 => row.abs_diff(col) > 1,
+                _ => row != col && keep[index] < share,
+            };
+            if zero {
+                *entry = T::zero();
+            }
+        }
+    }
+
     /// On random complex systems — dense, tridiagonal (a chain) and with random exact
     /// zeros (a tree), pivoting exercised — the solution equals nalgebra's
     /// `lu().solve()` exactly: same operations in the same order, zero updates skipped.
@@ -182,17 +204,7 @@ mod tests {
                     .map(|(&r, &i)| Complex64::new(r, i))
                     .collect();
                 let mut matrix = DMatrix::from_column_slice(n, n, &z[..n * n]);
-                for (index, entry) in matrix.iter_mut().enumerate() {
-                    let (row, col) = (index % n, index / n);
-                    let zero = match trial % 3 {
-                        0 => false,
-                        1 => row.abs_diff(col) > 1,
-                        _ => row != col && keep[index] < 0.4,
-                    };
-                    if zero {
-                        *entry = Complex64::default();
-                    }
-                }
+                sparsify(&mut matrix, trial, &keep, 0.4);
                 let b = DVector::from_column_slice(&z[n * n..]);
                 let expected = matrix.clone().lu().solve(&b).expect("regular");
                 let mut factored = matrix.clone();
@@ -217,17 +229,7 @@ mod tests {
                 let v = values(&mut seed, n * n + 2 * n);
                 let keep = values(&mut seed, n * n);
                 let mut matrix = DMatrix::from_column_slice(n, n, &v[..n * n]);
-                for (index, entry) in matrix.iter_mut().enumerate() {
-                    let (row, col) = (index % n, index / n);
-                    let zero = match trial % 3 {
-                        0 => false,
-                        1 => row.abs_diff(col) > 1,
-                        _ => row != col && keep[index] < 0.6,
-                    };
-                    if zero {
-                        *entry = 0.0;
-                    }
-                }
+                sparsify(&mut matrix, trial, &keep, 0.6);
                 let nalgebra_lu = matrix.clone().lu();
                 let mut factored = matrix.clone();
                 workspace.factor(&mut factored);
