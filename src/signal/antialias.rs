@@ -30,6 +30,7 @@
 //! filter designed elsewhere.
 
 use super::kernel::kaiser;
+use realfft::RealFftPlanner;
 use std::f64::consts::PI;
 
 /// Half-width of the filter in samples times the cutoff in cycles per sample (Kaiser's
@@ -88,7 +89,75 @@ impl LowPass {
 
     /// `values` low-passed, same length. Near the ends the weights of the samples that
     /// exist are renormalised to sum 1.
+    ///
+    /// The convolution runs by FFT (realfft), `O(n log n)`: the direct sum costs `2M + 1`
+    /// products a sample, and `M` grows with the sampling rate (450 at 40 kHz for a grid
+    /// of 64 points a revolution at 1000 rpm), so the direct form took 42 % of the
+    /// diagnosis of benchtruth case 2210 (10 kHz, forward model at 40 kHz). The record's
+    /// mean is taken out first and put back (the weights sum to 1 everywhere), so the
+    /// transform's rounding scales with the vibration, not with the mean speed; it agrees
+    /// with the direct sum within 1e-11 rpm (`tests`).
     pub fn apply(&self, values: &[f64]) -> Vec<f64> {
+        let n = values.len();
+        let m = self.half_width();
+        if n == 0 {
+            return Vec::new();
+        }
+        let mean = values.iter().sum::<f64>() / n as f64;
+        // Linear convolution with the symmetric kernel at lags −M..=M: zero padded to a
+        // length that holds it whole.
+        let len = (n + 2 * m).next_power_of_two();
+        let mut planner = RealFftPlanner::<f64>::new();
+        let forward = planner.plan_fft_forward(len);
+        let inverse = planner.plan_fft_inverse(len);
+        let mut signal = forward.make_input_vec();
+        for (x, v) in signal.iter_mut().zip(values) {
+            *x = v - mean;
+        }
+        let mut kernel = forward.make_input_vec();
+        for (j, k) in kernel.iter_mut().enumerate().take(2 * m + 1) {
+            *k = self.taps[j.abs_diff(m)];
+        }
+        let mut signal_spectrum = forward.make_output_vec();
+        let mut kernel_spectrum = forward.make_output_vec();
+        // The lengths are the plan's own, so neither transform can fail.
+        if forward.process(&mut signal, &mut signal_spectrum).is_err()
+            || forward.process(&mut kernel, &mut kernel_spectrum).is_err()
+        {
+            return self.apply_direct(values);
+        }
+        for (a, b) in signal_spectrum.iter_mut().zip(&kernel_spectrum) {
+            *a *= b;
+        }
+        let mut convolved = inverse.make_output_vec();
+        if inverse
+            .process(&mut signal_spectrum, &mut convolved)
+            .is_err()
+        {
+            return self.apply_direct(values);
+        }
+        // The weights of the samples inside the record: 1 but within M of its ends.
+        let mut prefix = Vec::with_capacity(2 * m + 2);
+        prefix.push(0.0);
+        for j in 0..=2 * m {
+            let last = prefix[j];
+            prefix.push(last + self.taps[j.abs_diff(m)]);
+        }
+        let scale = 1.0 / len as f64;
+        (0..n)
+            .map(|i| {
+                // Lags l with 0 ≤ i − l < n, within −M..=M, as indices l + M.
+                let lo = (i + m + 1).saturating_sub(n);
+                let hi = (i + m).min(2 * m);
+                let weight = prefix[hi + 1] - prefix[lo];
+                mean + convolved[i + m] * scale / weight
+            })
+            .collect()
+    }
+
+    /// The direct sum of [`Self::apply`], `O(n·M)`: the reference its transform is checked
+    /// against, and its fallback.
+    fn apply_direct(&self, values: &[f64]) -> Vec<f64> {
         let n = values.len();
         let m = self.half_width();
         (0..n)
@@ -164,5 +233,31 @@ mod tests {
         assert!(y.iter().all(|v| (v - 1956.3).abs() < 1e-9));
         assert!(LowPass::new(0.45 * 2560.0, 1.0 / 2560.0).is_none());
         assert!(LowPass::new(f64::NAN, 1.0 / 2560.0).is_none());
+    }
+
+    /// The transform gives the direct sum: within 1e-11 rpm (3e-12 of the vibration) at
+    /// every sample, the ends (renormalised weights) included — the direct sum itself
+    /// rounds each of its ~900 products at 1500 rpm's 2.3e-13 — on a 1500 rpm record with orders below
+    /// and above the cutoff, for record lengths shorter and longer than the filter.
+    #[test]
+    fn the_transform_is_the_direct_sum() {
+        let dt = 1.0 / 40960.0;
+        let filter = LowPass::new(grid_nyquist_hz(64, 1000.0), dt).expect("filter");
+        for n in [7usize, 300, 1001, 20000] {
+            let x: Vec<f64> = (0..n)
+                .map(|k| {
+                    let t = k as f64 * dt;
+                    1500.0 + 3.0 * (2.0 * PI * 50.0 * t).sin() + 0.4 * (2.0 * PI * 1900.0 * t).cos()
+                })
+                .collect();
+            let fast = filter.apply(&x);
+            let direct = filter.apply_direct(&x);
+            for (i, (a, b)) in fast.iter().zip(&direct).enumerate() {
+                assert!(
+                    (a - b).abs() < 1e-11,
+                    "n = {n}, sample {i}: {a} against {b}"
+                );
+            }
+        }
     }
 }
