@@ -4,7 +4,7 @@
 //! ROS2 step costs about what a Dormand–Prince step does (3 right-hand sides and 2 solves
 //! against 6 right-hand sides), so fewer steps is the faster run on any machine.
 
-use torsim::model::{Model, parse_model, presets::PRESETS};
+use torsim::model::{Model, parse_model, presets};
 use torsim::recording::Run;
 use torsim::transient::{Method, RunOptions, simulate};
 
@@ -38,10 +38,7 @@ fn total(s: (u64, u64)) -> u64 {
 /// (threshold 20) `auto` took ROS2.
 #[test]
 fn a_mesh_mode_past_the_explicit_stability_limit_runs_explicit() {
-    let preset = PRESETS
-        .iter()
-        .find(|p| p.name == "genset-20dof")
-        .expect("shipped");
+    let preset = presets::preset("genset-20dof").expect("shipped");
     let model = parse_model(preset.text, "genset-20dof.toml").expect("parses");
     let [auto, explicit, implicit] = steps_of_each(&model, Run::steady(1500.0, 0.5));
     assert_eq!(auto, explicit, "auto took another integrator");
@@ -59,10 +56,7 @@ fn a_mesh_mode_past_the_explicit_stability_limit_runs_explicit() {
 /// rejected against 218 448 + 36 867).
 #[test]
 fn a_mode_far_past_the_explicit_stability_limit_runs_implicit() {
-    let preset = PRESETS
-        .iter()
-        .find(|p| p.name == "two-inertia")
-        .expect("shipped");
+    let preset = presets::preset("two-inertia").expect("shipped");
     // Before the first `[[harmonic]]`, once.
     let text = preset.text.replacen(
         "[[harmonic]]",

@@ -20,7 +20,7 @@
 use nalgebra::{ComplexField, DMatrix};
 
 /// Row swaps of one factorization, reused between solves.
-#[derive(Debug, Default, Clone)]
+#[derive(Debug, Default)]
 pub(crate) struct LuWorkspace {
     /// `(i, pivot row)` for each column where rows were swapped, in elimination order.
     swaps: Vec<(usize, usize)>,

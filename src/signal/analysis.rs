@@ -249,8 +249,7 @@ pub fn analyse_with(
         .map(|(_, v)| &v[..])
         .chain(signals.iter().map(|(_, v, _)| &v[..]))
         .collect();
-    let filtered: Option<Vec<Vec<f64>>> =
-        low_pass.map(|f| all.iter().map(|s| f.apply(s)).collect());
+    let filtered: Option<Vec<Vec<f64>>> = low_pass.map(|f| f.apply_all(&all));
     let all: Vec<&[f64]> = match &filtered {
         Some(f) => f.iter().map(Vec::as_slice).collect(),
         None => all,

@@ -30,7 +30,8 @@
 //! filter designed elsewhere.
 
 use super::kernel::kaiser;
-use realfft::RealFftPlanner;
+use realfft::num_complex::Complex;
+use realfft::{ComplexToReal, RealFftPlanner, RealToComplex};
 use std::f64::consts::PI;
 
 /// Half-width of the filter in samples times the cutoff in cycles per sample (Kaiser's
@@ -98,59 +99,25 @@ impl LowPass {
     /// transform's rounding scales with the vibration, not with the mean speed; it agrees
     /// with the direct sum within 1e-11 rpm (`tests`).
     pub fn apply(&self, values: &[f64]) -> Vec<f64> {
-        let n = values.len();
-        let m = self.half_width();
-        if n == 0 {
-            return Vec::new();
-        }
-        let mean = values.iter().sum::<f64>() / n as f64;
-        // Linear convolution with the symmetric kernel at lags −M..=M: zero padded to a
-        // length that holds it whole.
-        let len = (n + 2 * m).next_power_of_two();
-        let mut planner = RealFftPlanner::<f64>::new();
-        let forward = planner.plan_fft_forward(len);
-        let inverse = planner.plan_fft_inverse(len);
-        let mut signal = forward.make_input_vec();
-        for (x, v) in signal.iter_mut().zip(values) {
-            *x = v - mean;
-        }
-        let mut kernel = forward.make_input_vec();
-        for (j, k) in kernel.iter_mut().enumerate().take(2 * m + 1) {
-            *k = self.taps[j.abs_diff(m)];
-        }
-        let mut signal_spectrum = forward.make_output_vec();
-        let mut kernel_spectrum = forward.make_output_vec();
-        // The lengths are the plan's own, so neither transform can fail.
-        if forward.process(&mut signal, &mut signal_spectrum).is_err()
-            || forward.process(&mut kernel, &mut kernel_spectrum).is_err()
-        {
-            return self.apply_direct(values);
-        }
-        for (a, b) in signal_spectrum.iter_mut().zip(&kernel_spectrum) {
-            *a *= b;
-        }
-        let mut convolved = inverse.make_output_vec();
-        if inverse
-            .process(&mut signal_spectrum, &mut convolved)
-            .is_err()
-        {
-            return self.apply_direct(values);
-        }
-        // The weights of the samples inside the record: 1 but within M of its ends.
-        let mut prefix = Vec::with_capacity(2 * m + 2);
-        prefix.push(0.0);
-        for j in 0..=2 * m {
-            let last = prefix[j];
-            prefix.push(last + self.taps[j.abs_diff(m)]);
-        }
-        let scale = 1.0 / len as f64;
-        (0..n)
-            .map(|i| {
-                // Lags l with 0 ≤ i − l < n, within −M..=M, as indices l + M.
-                let lo = (i + m + 1).saturating_sub(n);
-                let hi = (i + m).min(2 * m);
-                let weight = prefix[hi + 1] - prefix[lo];
-                mean + convolved[i + m] * scale / weight
+        self.apply_all(&[values]).pop().unwrap_or_default()
+    }
+
+    /// Each of `signals` low-passed as by [`Self::apply`]; the transform plan, the
+    /// kernel's spectrum and the end weights are made once for all signals of a length
+    /// (a recording's channels share theirs).
+    pub fn apply_all(&self, signals: &[&[f64]]) -> Vec<Vec<f64>> {
+        let mut convolver: Option<Convolver> = None;
+        signals
+            .iter()
+            .map(|values| {
+                let n = values.len();
+                if convolver.as_ref().is_none_or(|c| c.n != n) {
+                    convolver = Some(Convolver::new(&self.taps, n));
+                }
+                convolver
+                    .as_ref()
+                    .and_then(|c| c.apply(values))
+                    .unwrap_or_else(|| self.apply_direct(values))
             })
             .collect()
     }
@@ -177,6 +144,90 @@ impl LowPass {
                 }
             })
             .collect()
+    }
+}
+
+/// The FFT convolution of [`LowPass::apply`] for signals of `n` samples.
+struct Convolver {
+    n: usize,
+    half_width: usize,
+    forward: std::sync::Arc<dyn RealToComplex<f64>>,
+    inverse: std::sync::Arc<dyn ComplexToReal<f64>>,
+    /// The kernel at lags −M..=M, zero padded, transformed.
+    kernel_spectrum: Vec<Complex<f64>>,
+    /// Running sums of the kernel over its lags, for the weights within M of the ends.
+    prefix: Vec<f64>,
+}
+
+impl Convolver {
+    fn new(taps: &[f64], n: usize) -> Self {
+        let m = taps.len() - 1;
+        // Linear convolution with the symmetric kernel: zero padded to a length that holds
+        // it whole.
+        let len = (n + 2 * m).next_power_of_two();
+        let mut planner = RealFftPlanner::<f64>::new();
+        let forward = planner.plan_fft_forward(len);
+        let inverse = planner.plan_fft_inverse(len);
+        let mut kernel = forward.make_input_vec();
+        for (j, k) in kernel.iter_mut().enumerate().take(2 * m + 1) {
+            *k = taps[j.abs_diff(m)];
+        }
+        let mut kernel_spectrum = forward.make_output_vec();
+        // The lengths are the plan's own, so the transform cannot fail; if it did, the
+        // spectrum would be empty and every signal would take the direct sum.
+        if forward.process(&mut kernel, &mut kernel_spectrum).is_err() {
+            kernel_spectrum.clear();
+        }
+        let mut prefix = Vec::with_capacity(2 * m + 2);
+        prefix.push(0.0);
+        for j in 0..=2 * m {
+            let last = prefix[j];
+            prefix.push(last + taps[j.abs_diff(m)]);
+        }
+        Self {
+            n,
+            half_width: m,
+            forward,
+            inverse,
+            kernel_spectrum,
+            prefix,
+        }
+    }
+
+    /// `values` (of `n` samples) convolved; `None` if a transform failed.
+    fn apply(&self, values: &[f64]) -> Option<Vec<f64>> {
+        let (n, m) = (self.n, self.half_width);
+        if n == 0 {
+            return Some(Vec::new());
+        }
+        if self.kernel_spectrum.is_empty() {
+            return None;
+        }
+        let mean = values.iter().sum::<f64>() / n as f64;
+        let mut signal = self.forward.make_input_vec();
+        for (x, v) in signal.iter_mut().zip(values) {
+            *x = v - mean;
+        }
+        let mut spectrum = self.forward.make_output_vec();
+        self.forward.process(&mut signal, &mut spectrum).ok()?;
+        for (a, b) in spectrum.iter_mut().zip(&self.kernel_spectrum) {
+            *a *= b;
+        }
+        let mut convolved = self.inverse.make_output_vec();
+        self.inverse.process(&mut spectrum, &mut convolved).ok()?;
+        let scale = 1.0 / convolved.len() as f64;
+        // The weights of the samples inside the record: 1 but within M of its ends.
+        Some(
+            (0..n)
+                .map(|i| {
+                    // Lags l with 0 ≤ i − l < n, within −M..=M, as indices l + M.
+                    let lo = (i + m + 1).saturating_sub(n);
+                    let hi = (i + m).min(2 * m);
+                    let weight = self.prefix[hi + 1] - self.prefix[lo];
+                    mean + convolved[i + m] * scale / weight
+                })
+                .collect(),
+        )
     }
 }
 
@@ -236,9 +287,10 @@ mod tests {
     }
 
     /// The transform gives the direct sum: within 1e-11 rpm (3e-12 of the vibration) at
-    /// every sample, the ends (renormalised weights) included — the direct sum itself
-    /// rounds each of its ~900 products at 1500 rpm's 2.3e-13 — on a 1500 rpm record with orders below
-    /// and above the cutoff, for record lengths shorter and longer than the filter.
+    /// every sample, the ends (renormalised weights) included (the direct sum itself
+    /// rounds each of its ~900 products at 1500 rpm's 2.3e-13), on a 1500 rpm record with
+    /// orders below and above the cutoff, for record lengths shorter and longer than the
+    /// filter; [`LowPass::apply_all`] on signals of two lengths gives each its own.
     #[test]
     fn the_transform_is_the_direct_sum() {
         let dt = 1.0 / 40960.0;
@@ -252,6 +304,11 @@ mod tests {
                 .collect();
             let fast = filter.apply(&x);
             let direct = filter.apply_direct(&x);
+            let half = &x[..n / 2 + 1];
+            let all = filter.apply_all(&[&x, &x, half]);
+            assert_eq!(all[0], fast);
+            assert_eq!(all[1], fast);
+            assert_eq!(all[2], filter.apply(half));
             for (i, (a, b)) in fast.iter().zip(&direct).enumerate() {
                 assert!(
                     (a - b).abs() < 1e-11,

@@ -36,8 +36,12 @@ pub struct Ros2 {
     /// `I − γhJ` factored in place ([`LuWorkspace::factor`]).
     factored: DMatrix<f64>,
     lu: LuWorkspace,
+    /// Per-step buffers: the stages, ∂f/∂t, the stage state and the new state.
     k1: Vec<f64>,
     k2: Vec<f64>,
+    f_t: Vec<f64>,
+    stage: Vec<f64>,
+    y_new: Vec<f64>,
     since_jacobian: u64,
     /// Proposed next step, s.
     pub h: f64,
@@ -82,6 +86,9 @@ impl Ros2 {
             lu: LuWorkspace::default(),
             k1: vec![0.0; n],
             k2: vec![0.0; n],
+            f_t: vec![0.0; n],
+            stage: vec![0.0; n],
+            y_new: vec![0.0; n],
             since_jacobian: JACOBIAN_EVERY,
             h: h0.min(h_max),
             h_max,
@@ -146,7 +153,10 @@ impl Ros2 {
             // √ε-sized step relative to t, taken as the exactly representable difference.
             let dt = (self.t + 1.5e-8 * self.t.abs().max(1.0)) - self.t;
             rhs(self.t + dt, &self.y, &mut self.scratch);
-            let f_t: Vec<f64> = (0..n).map(|i| (self.scratch[i] - self.f[i]) / dt).collect();
+            let f_t = &mut self.f_t;
+            for ((d, s), f) in f_t.iter_mut().zip(&self.scratch).zip(&self.f) {
+                *d = (s - f) / dt;
+            }
             let k1 = &mut self.k1;
             for i in 0..n {
                 k1[i] = self.f[i] + GAMMA * h * f_t[i];
@@ -154,8 +164,10 @@ impl Ros2 {
             if !self.lu.solve(&self.factored, k1) {
                 k1.fill(f64::NAN);
             }
-            let stage: Vec<f64> = (0..n).map(|i| self.y[i] + h * k1[i]).collect();
-            rhs(self.t + h, &stage, &mut self.scratch);
+            for ((x, y), k) in self.stage.iter_mut().zip(&self.y).zip(k1.iter()) {
+                *x = y + h * k;
+            }
+            rhs(self.t + h, &self.stage, &mut self.scratch);
             let k2 = &mut self.k2;
             for i in 0..n {
                 k2[i] = self.scratch[i] - 2.0 * k1[i] - GAMMA * h * f_t[i];
@@ -165,9 +177,10 @@ impl Ros2 {
             }
             let (k1, k2) = (&self.k1, &self.k2);
             let mut sum = 0.0;
-            let y_new: Vec<f64> = (0..n)
-                .map(|i| self.y[i] + 1.5 * h * k1[i] + 0.5 * h * k2[i])
-                .collect();
+            for i in 0..n {
+                self.y_new[i] = self.y[i] + 1.5 * h * k1[i] + 0.5 * h * k2[i];
+            }
+            let y_new = &self.y_new;
             for i in 0..n {
                 let e = 0.5 * h * (k1[i] + k2[i]);
                 let scale = self.atol[i] + self.rtol * self.y[i].abs().max(y_new[i].abs());
@@ -197,7 +210,7 @@ impl Ros2 {
             }
             std::mem::swap(&mut self.y_prev, &mut self.y);
             std::mem::swap(&mut self.f_prev, &mut self.f);
-            self.y.copy_from_slice(&y_new);
+            self.y.copy_from_slice(&self.y_new);
             rhs(self.t + h, &self.y, &mut self.f);
             self.t_prev = self.t;
             self.t += h;

@@ -35,7 +35,7 @@ pub enum Method {
 /// Until 2026-12-04 the threshold was `λh_max > 20`, where stability alone would hold
 /// Dormand–Prince back. Forced on every shipped preset at 1500 rpm, ROS2 takes 6–66× the
 /// steps of Dormand–Prince; under that rule `genset-20dof` (λh_max = 25) ran on ROS2, 12×
-/// slower, and the diagnosis of case 2016 spent 40 % of its time in ROS2 (35.0 s → 20.6 s).
+/// slower, and the diagnosis of case 2016 spent 53 % of its time in ROS2 (35.0 s → 20.6 s).
 pub fn is_stiff(lambda_max_rad_s: f64, h_max_s: f64, rtol: f64) -> bool {
     let threshold = 90.0 * (1e-4 / rtol.max(1e-14)).cbrt();
     lambda_max_rad_s * h_max_s > threshold
