@@ -113,6 +113,9 @@ pub struct Row {
     /// Which draw of the seed was diagnosed: 0, or a redraw after draws no bench could
     /// run ([`crate::redraw::MAX_DRAWS`]).
     pub draw: u64,
+    /// How plainly the campaign shows the effect: the largest `z` of
+    /// [`crate::visibility`]; `None` for a control or a failed draw.
+    pub visible_z: Option<f64>,
 }
 
 /// Draws and diagnoses the case of `seed` in `dir`.
@@ -127,6 +130,7 @@ pub fn run_case(torsim: &Path, seed: u64, dir: &Path) -> Row {
                 seconds: 0.0,
                 exercised: None,
                 draw: 0,
+                visible_z: None,
             };
         }
     };
@@ -161,6 +165,7 @@ pub fn run_case(torsim: &Path, seed: u64, dir: &Path) -> Row {
         seconds,
         exercised: crate::exercise::Exercise::headline(&all),
         draw: files.draw,
+        visible_z: files.visibility.as_ref().map(|v| v.z_max),
     }
 }
 
@@ -261,21 +266,22 @@ fn verdict_of(r: &Row) -> String {
     }
 }
 
-/// `results.csv`: one row per case. `exercised` is [`Row::exercised`], empty where not
-/// measured.
+/// `results.csv`: one row per case. `exercised` is [`Row::exercised`] and `visible_z`
+/// [`Row::visible_z`], empty where not measured.
 pub fn results_csv(rows: &[Row]) -> String {
     let mut s = String::from(
-        "seed,truth,form,verdict,right,place,fit_before,fit_after,seconds,error,exercised,draw\n",
+        "seed,truth,form,verdict,right,place,fit_before,fit_after,seconds,error,exercised,draw,visible_z\n",
     );
     for r in rows {
         let num = |x: Option<f64>| x.map_or(String::new(), |v| format!("{v}"));
         let exercised = r.exercised.map_or(String::new(), |v| format!("{v:.4}"));
+        let visible = r.visible_z.map_or(String::new(), |v| format!("{v:.2}"));
         match &r.outcome {
             Ok(o) => {
                 let place = o.place.map_or("", Place::word);
                 let _ = writeln!(
                     s,
-                    "{},{},{},{},{},{place},{},{},{:.2},,{exercised},{}",
+                    "{},{},{},{},{},{place},{},{},{:.2},,{exercised},{},{visible}",
                     r.seed,
                     o.truth,
                     r.form,
@@ -290,7 +296,7 @@ pub fn results_csv(rows: &[Row]) -> String {
             Err(e) => {
                 let _ = writeln!(
                     s,
-                    "{},{},{},error,false,,,,{:.2},\"{}\",{exercised},{}",
+                    "{},{},{},error,false,,,,{:.2},\"{}\",{exercised},{},{visible}",
                     r.seed,
                     class_of_row(r),
                     r.form,
@@ -318,6 +324,7 @@ mod tests {
             place: Some(("cylinder".into(), vec!["6".into()])),
             exercise: Vec::new(),
             draw: 0,
+            visibility: None,
         }
     }
 

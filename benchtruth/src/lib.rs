@@ -23,6 +23,7 @@ pub mod rng;
 pub mod sim;
 pub mod sizing;
 pub mod visco;
+pub mod visibility;
 pub mod write;
 
 pub use bench::{Outcome, score};

@@ -102,7 +102,7 @@ fn main() -> Result<()> {
 fn report(row: &benchtruth::bench::Row) {
     match &row.outcome {
         Ok(o) => eprintln!(
-            "seed {}: {} ({}) -> {} [{}] {:.1} s{}",
+            "seed {}: {} ({}) -> {} [{}] {:.1} s{}{}",
             row.seed,
             o.truth,
             row.form,
@@ -110,7 +110,9 @@ fn report(row: &benchtruth::bench::Row) {
             if o.right { "right" } else { "wrong" },
             row.seconds,
             row.exercised
-                .map_or(String::new(), |v| format!(", exercised {v:.3}"))
+                .map_or(String::new(), |v| format!(", exercised {v:.3}")),
+            row.visible_z
+                .map_or(String::new(), |v| format!(", visible z {v:.1}"))
         ),
         Err(e) => eprintln!("seed {}: error: {e}", row.seed),
     }

@@ -9,8 +9,16 @@
 //! Published runs 5–12 lost 1–3 of every 110 cases this way as "bench errors" (the
 //! twelfth: 101117's Dahl truth diverged; in 101132 and 101161 the crank turned
 //! backwards): cases of the bench, not of the diagnosis.
+//!
+//! A draw whose campaign cannot show its effect is drawn again too (from 2026-12-05):
+//! no order amplitude of any recording moves by [`MIN_VISIBLE_Z`] of its uncertainty
+//! when the effect is taken out of the truth ([`crate::visibility`]). No diagnosis can
+//! name what the recordings do not hold; such a case measured the bench, not the
+//! diagnosis. The last draw of a seed is kept whatever its visibility, with it written
+//! in `truth.toml`, so that every seed still gives a case.
 
 use crate::draw::draw_attempt;
+use crate::visibility::MIN_VISIBLE_Z;
 use crate::write::{CaseFiles, WriteError, simulate_case, write_simulated};
 use std::path::Path;
 
@@ -18,14 +26,30 @@ use std::path::Path;
 pub const MAX_DRAWS: u64 = 4;
 
 /// Draws the case of `seed` (class forced or `seed mod 11`) and writes it into `dir`; a
-/// draw no bench could run is drawn again, up to [`MAX_DRAWS`] times. Nothing is written
-/// for a draw set aside, nor when every draw fails.
+/// draw no bench could run, or whose campaign cannot show its effect, is drawn again, up
+/// to [`MAX_DRAWS`] times. Nothing is written for a draw set aside, nor when every draw
+/// fails.
 pub fn write_case(seed: u64, class: Option<&str>, dir: &Path) -> Result<CaseFiles, WriteError> {
     let mut unusable: Vec<String> = Vec::new();
     for attempt in 0..MAX_DRAWS {
         let case = draw_attempt(seed, class, attempt).map_err(WriteError::Draw)?;
         match simulate_case(&case) {
-            Ok(simulated) => return write_simulated(&case, simulated, &unusable, dir),
+            Ok(simulated) => {
+                let meters: Vec<_> = simulated.iter().map(|s| s.orders.clone()).collect();
+                let visibility = crate::visibility::measure(&case, &meters);
+                if let Some(v) = &visibility
+                    && v.z_max < MIN_VISIBLE_Z
+                    && attempt + 1 < MAX_DRAWS
+                {
+                    unusable.push(format!(
+                        "seed {seed} draw {attempt}: the campaign cannot show its effect (largest \
+                         change of an order amplitude z = {:.2} < {MIN_VISIBLE_Z}, at {})",
+                        v.z_max, v.at
+                    ));
+                    continue;
+                }
+                return write_simulated(&case, simulated, visibility, &unusable, dir);
+            }
             Err(WriteError::Unusable(why)) => unusable.push(why),
             Err(e) => return Err(e),
         }

@@ -8,9 +8,17 @@ use crate::effects::{Effect, SensorLaw};
 use crate::exercise::{Exercise, Meter};
 use crate::rng::Rng;
 use crate::sim;
+use crate::visibility::{OrderMeter, Visibility};
 use std::f64::consts::TAU;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
+
+/// How far, as a fraction of its mean speed, a node's speed may swing before the draw is
+/// no bench (0.75: every shaft stays within 25–175 % of its mean speed). Measured IAS
+/// swings of running engines are a few per cent to some tens of per cent at idle; a
+/// crank that nearly stops once a revolution would stall, and a reader's over-range test
+/// (three times the running median over a revolution) would rightly refuse its samples.
+pub const MAX_SWING: f64 = 0.75;
 
 /// Errors of the writer.
 #[derive(Debug, thiserror::Error)]
@@ -43,6 +51,9 @@ pub struct CaseFiles {
     pub exercise: Vec<(String, Exercise)>,
     /// Which draw of the seed was written ([`crate::draw::Case::attempt`]).
     pub draw: u64,
+    /// How plainly the campaign shows the effect ([`crate::visibility`]); `None` for a
+    /// control.
+    pub visibility: Option<Visibility>,
 }
 
 fn put(path: &Path, text: &str) -> Result<(), WriteError> {
@@ -172,6 +183,8 @@ pub(crate) struct Simulated {
     csv: String,
     sidecar: String,
     exercise: Option<Exercise>,
+    /// The noise-free order sums of the recording ([`crate::visibility`]).
+    pub(crate) orders: OrderMeter,
 }
 
 /// Simulates one recording (CSV + sidecar text); nothing is written, so a case that fails
@@ -200,33 +213,40 @@ fn simulate_recording(case: &Case, idx: usize) -> Result<Simulated, WriteError> 
     // The first time at which the truth is no longer finite: a bench never writes NaN
     // (a diverged truth is the bench's failure, reported as such, not torsim's).
     let mut diverged_s: Option<f64> = None;
-    // The first time a node turns backwards against its mean direction: an engine
-    // stalls there, and a shaft that reverses through a resonance is no bench either
-    // (seed 100585's run-up reached −56 rpm at the crank; development seed 2117's brake
-    // went below 0 rpm).
-    let mut reversed: Option<(f64, usize)> = None;
+    // The first time a node's speed leaves 1 ± MAX_SWING of its mean: an engine stalls
+    // or races there, and a shaft that nearly stops or reverses within a revolution
+    // through a resonance is no bench either (seed 100585's run-up reached −56 rpm at
+    // the crank; development seed 2117's brake went below 0 rpm; published 101326's crank
+    // swung between 1.6 and 1770 rpm at a mean of 900 rpm in its run-up).
+    let mut reversed: Option<(f64, usize, f64)> = None;
     let ratios = case.truth.speed_ratios();
     let mut meter = Meter::for_case(case);
+    let mut orders = crate::visibility::meter_for(case, idx);
+    let mut clean = vec![0.0; c.stations.len()];
+    let crank = case.truth.engine.node;
     sim::run(&case.truth, &plant, c.rate_hz, |t, y| {
         if let Some(m) = meter.as_mut() {
             m.add(&y[..n_nodes]);
         }
         if reversed.is_none() {
+            let (mean_rad_s, _) = plant.profile.at(plant.profile.settle_s + t);
             reversed = (0..n_nodes)
-                .find(|&i| y[n_nodes + i] * ratios[i] <= 0.0)
-                .map(|i| (t, i));
+                .map(|i| (i, y[n_nodes + i] / (mean_rad_s * ratios[i])))
+                .find(|(_, f)| (*f - 1.0).abs() > MAX_SWING)
+                .map(|(i, f)| (t, i, f));
         }
         let _ = write!(csv, "{:.6}", c.clock_start_s + t);
         for (k, s) in c.stations.iter().enumerate() {
             let law = artifact.as_ref().filter(|(st, _)| *st == k).map(|(_, l)| l);
-            let v = measured_rpm(law, y[s.node], y[n_nodes + s.node], sample_s)
-                + c.noise_rpm * rng.normal();
+            clean[k] = measured_rpm(law, y[s.node], y[n_nodes + s.node], sample_s);
+            let v = clean[k] + c.noise_rpm * rng.normal();
             if !v.is_finite() && diverged_s.is_none() {
                 diverged_s = Some(t);
             }
             let _ = write!(csv, ",{v:.3}");
         }
         csv.push('\n');
+        orders.add(y[crank], &clean);
     });
     if let Some(t) = diverged_s {
         return Err(WriteError::Unusable(format!(
@@ -234,10 +254,18 @@ fn simulate_recording(case: &Case, idx: usize) -> Result<Simulated, WriteError> 
             case.seed, case.attempt, rec.stem, case.form
         )));
     }
-    if let Some((t, i)) = reversed {
+    if let Some((t, i, f)) = reversed {
+        let what = if f <= 0.0 {
+            "turns backwards"
+        } else if f < 1.0 {
+            "nearly stops"
+        } else {
+            "races"
+        };
         return Err(WriteError::Unusable(format!(
-            "seed {} draw {}: node `{}` turns backwards in `{}` at {t:.4} s: no running bench \
-             does that (an engine would stall)",
+            "seed {} draw {}: node `{}` {what} in `{}` at {t:.4} s ({f:.2} of its mean \
+             speed, outside 1 ± {MAX_SWING}): no running bench does that (an engine would \
+             stall or race)",
             case.seed, case.attempt, case.truth.nodes[i].name, rec.stem
         )));
     }
@@ -263,12 +291,18 @@ fn simulate_recording(case: &Case, idx: usize) -> Result<Simulated, WriteError> 
         csv,
         sidecar: side,
         exercise: meter.and_then(|m| m.result()),
+        orders,
     })
 }
 
 /// `truth.toml`: effect, form, parameters, place, errors, campaign, seed, and what each
 /// recording exercised (`exercise`).
-fn truth_toml(case: &Case, exercise: &[(String, Exercise)], unusable: &[String]) -> String {
+fn truth_toml(
+    case: &Case,
+    exercise: &[(String, Exercise)],
+    visibility: Option<&Visibility>,
+    unusable: &[String],
+) -> String {
     let redrawn: Vec<String> = unusable
         .iter()
         .map(|u| format!("\"{}\"", u.replace('"', "'")))
@@ -312,6 +346,13 @@ fn truth_toml(case: &Case, exercise: &[(String, Exercise)], unusable: &[String])
             let _ = writeln!(s, "\"{stem}\" = {}", e.toml());
         }
     }
+    if let Some(v) = visibility {
+        let _ = writeln!(
+            s,
+            "\n# How plainly the campaign shows the effect (benchtruth's visibility.rs).\n[visibility]\nz_max = {}\nat = \"{}\"\nabove_3 = {}\nobservations = {}",
+            v.z_max, v.at, v.above_3, v.observations
+        );
+    }
     s
 }
 
@@ -338,6 +379,7 @@ pub(crate) fn simulate_case(case: &Case) -> Result<Vec<Simulated>, WriteError> {
 pub(crate) fn write_simulated(
     case: &Case,
     simulated: Vec<Simulated>,
+    visibility: Option<Visibility>,
     unusable: &[String],
     dir: &Path,
 ) -> Result<CaseFiles, WriteError> {
@@ -361,7 +403,10 @@ pub(crate) fn write_simulated(
         }
     }
     let truth = dir.join("truth.toml");
-    put(&truth, &truth_toml(case, &exercise, unusable))?;
+    put(
+        &truth,
+        &truth_toml(case, &exercise, visibility.as_ref(), unusable),
+    )?;
     Ok(CaseFiles {
         model,
         recordings,
@@ -371,5 +416,6 @@ pub(crate) fn write_simulated(
         place: case.place.clone(),
         exercise,
         draw: case.attempt,
+        visibility,
     })
 }
