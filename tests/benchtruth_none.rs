@@ -144,7 +144,7 @@ fn backlash_truth(seed: u64, dir: &Path) -> std::path::PathBuf {
         panic!("seed {seed}: connection {conn} is no gear");
     };
     let (lo, hi) = benchtruth::fitpoints::speed_range_rpm(&case.campaign);
-    let text = benchtruth::write::model_toml(&case.truth, lo, hi);
+    let text = benchtruth::model_file::model_toml(&case.truth, lo, hi);
     let name = format!("name = \"{}\"\n", case.truth.connections[conn].name);
     let at = text.find(&name).expect("the gear's section") + name.len();
     let keys = format!(

@@ -1,14 +1,15 @@
 //! Writes a case as a test engineer hands it over: the user's model (model-format.md),
 //! the recordings (recording-format.md: CSV with `time_s` to the microsecond and a TOML
-//! sidecar), and `truth.toml`, which only the scorer reads. TOML is written by hand.
+//! sidecar), and `truth.toml`, which only the scorer reads (`model_file.rs` and
+//! `truth_file.rs` write those two). TOML is written by hand.
 
 use crate::draw::{Case, stream};
-use crate::driveline::{Driveline, Kind};
 use crate::effects::{Effect, SensorLaw};
 use crate::exercise::{Exercise, Meter};
 use crate::rng::Rng;
 use crate::sim;
 use crate::visibility::{OrderMeter, Visibility};
+use crate::{model_file, truth_file};
 use std::f64::consts::TAU;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -61,84 +62,6 @@ fn put(path: &Path, text: &str) -> Result<(), WriteError> {
         path: path.to_path_buf(),
         source,
     })
-}
-
-fn list(xs: &[f64]) -> String {
-    xs.iter()
-        .map(|x| format!("{x}"))
-        .collect::<Vec<_>>()
-        .join(", ")
-}
-
-/// The model file of `d` (spec model-format.md).
-pub fn model_toml(d: &Driveline, lo_rpm: f64, hi_rpm: f64) -> String {
-    let mut s = format!(
-        "format = 1\nname = \"{}\"\ndescription = \"Written by benchtruth from the bench's nominal data.\"\n",
-        d.name
-    );
-    for n in &d.nodes {
-        let _ = write!(
-            s,
-            "\n[[inertia]]\nname = \"{}\"\ninertia = {:e}\n",
-            n.name, n.inertia_kg_m2
-        );
-        if n.damping_nm_s > 0.0 {
-            let _ = writeln!(s, "damping = {:e}", n.damping_nm_s);
-        }
-    }
-    for c in &d.connections {
-        let (from, to) = (&d.nodes[c.from].name, &d.nodes[c.to].name);
-        let _ = write!(
-            s,
-            "\n[[connection]]\nname = \"{}\"\nfrom = \"{from}\"\nto = \"{to}\"\n",
-            c.name
-        );
-        let _ = match c.kind {
-            Kind::Shaft { stiffness, damping } => writeln!(
-                s,
-                "kind = \"shaft\"\nstiffness = {stiffness:e}\ndamping = {damping:e}"
-            ),
-            Kind::Rubber { stiffness, psi } => writeln!(
-                s,
-                "kind = \"rubber\"\nstiffness = {stiffness:e}\npsi = {psi:e}"
-            ),
-            Kind::Gear {
-                ratio,
-                mesh_stiffness,
-                ..
-            } => writeln!(
-                s,
-                "kind = \"gear\"\nratio = {ratio}\nmesh_stiffness = {mesh_stiffness:e}"
-            ),
-        };
-    }
-    let e = &d.engine;
-    let _ = write!(
-        s,
-        "\n[engine]\nat = \"{}\"\ncylinders = {}\nstrokes = 4\nfiring_angles_deg = [{}]\nbore = {}\ncrank_radius = {}\nconrod_length = {}\nreciprocating_mass = {}\npressure_by_load = [\n",
-        d.nodes[e.node].name,
-        e.firing_deg.len(),
-        list(&e.firing_deg),
-        e.bore_m,
-        e.crank_radius_m,
-        e.conrod_m,
-        e.reciprocating_kg
-    );
-    for p in &e.pressure {
-        let _ = writeln!(
-            s,
-            "  {{ load = {}, crank_angle_deg = [{}], bar = [{}] }},",
-            p.load,
-            list(&p.angle_deg),
-            list(&p.bar)
-        );
-    }
-    let _ = write!(
-        s,
-        "]\n\n[load]\nat = \"{}\"\ndamping = {:e}\n\n[operation]\nspeed_range_rpm = [{lo_rpm}, {hi_rpm}]\n",
-        d.nodes[d.load_node].name, d.load_damping_nm_s
-    );
-    s
 }
 
 /// The IAS a station reads: the shaft speed times the sensor's angle-error slope.
@@ -295,67 +218,6 @@ fn simulate_recording(case: &Case, idx: usize) -> Result<Simulated, WriteError> 
     })
 }
 
-/// `truth.toml`: effect, form, parameters, place, errors, campaign, seed, and what each
-/// recording exercised (`exercise`).
-fn truth_toml(
-    case: &Case,
-    exercise: &[(String, Exercise)],
-    visibility: Option<&Visibility>,
-    unusable: &[String],
-) -> String {
-    let redrawn: Vec<String> = unusable
-        .iter()
-        .map(|u| format!("\"{}\"", u.replace('"', "'")))
-        .collect();
-    let mut s = format!(
-        "# The truth of this benchtruth case; torsim never reads it.\nformat = 1\nseed = {}\ndraw = {}\nredrawn_because = [{}]\neffect = \"{}\"\nform = \"{}\"\nfirst_mode_damping = {}\nmodes_hz = [{}]\n",
-        case.seed,
-        case.attempt,
-        redrawn.join(", "),
-        case.class,
-        case.form,
-        case.zeta1,
-        list(&case.modes_hz)
-    );
-    if let Some((key, ok)) = &case.place {
-        let q: Vec<String> = ok.iter().map(|v| format!("\"{v}\"")).collect();
-        let _ = writeln!(s, "place_key = \"{key}\"\nplace = [{}]", q.join(", "));
-    }
-    let _ = writeln!(
-        s,
-        "effect_detail = \"{}\"",
-        format!("{:?}", case.effect).replace('"', "'")
-    );
-    s.push_str("\n[parameters]\n");
-    for (k, v) in &case.params {
-        let _ = writeln!(s, "{k} = {v}");
-    }
-    s.push_str("\n[parameter_errors]\n");
-    for (k, v) in &case.errors {
-        let _ = writeln!(s, "\"{k}\" = {v}");
-    }
-    let c = &case.campaign;
-    let _ = writeln!(
-        s,
-        "\n[measurement]\nrate_hz = {}\nnoise_rpm = {}\nwobble = {}\nwobble_period_s = {}\nclock_start_s = {}",
-        c.rate_hz, c.noise_rpm, c.wobble, c.wobble_period_s, c.clock_start_s
-    );
-    if !exercise.is_empty() {
-        s.push_str("\n# What each recording exercised of the effect (benchtruth's exercise.rs).\n[exercise]\n");
-        for (stem, e) in exercise {
-            let _ = writeln!(s, "\"{stem}\" = {}", e.toml());
-        }
-    }
-    if let Some(v) = visibility {
-        let _ = writeln!(
-            s,
-            "\n# How plainly the campaign shows the effect (benchtruth's visibility.rs).\n[visibility]\nz_max = {}\nat = \"{}\"\nabove_3 = {}\nobservations = {}",
-            v.z_max, v.at, v.above_3, v.observations
-        );
-    }
-    s
-}
-
 /// Simulates every recording of `case`, in parallel; nothing is written.
 pub(crate) fn simulate_case(case: &Case) -> Result<Vec<Simulated>, WriteError> {
     let results: Vec<Result<Simulated, WriteError>> = std::thread::scope(|s| {
@@ -390,7 +252,7 @@ pub(crate) fn write_simulated(
     // The range the bench's rubber fits take their band from (`sim::band`).
     let (lo, hi) = crate::fitpoints::speed_range_rpm(&case.campaign);
     let model = dir.join("model.toml");
-    put(&model, &model_toml(&case.user, lo, hi))?;
+    put(&model, &model_file::model_toml(&case.user, lo, hi))?;
     let mut recordings = Vec::new();
     let mut exercise: Vec<(String, Exercise)> = Vec::new();
     for r in simulated {
@@ -405,7 +267,7 @@ pub(crate) fn write_simulated(
     let truth = dir.join("truth.toml");
     put(
         &truth,
-        &truth_toml(case, &exercise, visibility.as_ref(), unusable),
+        &truth_file::truth_toml(case, &exercise, visibility.as_ref(), unusable),
     )?;
     Ok(CaseFiles {
         model,
