@@ -6,9 +6,10 @@
 use crate::draw::{Case, stream};
 use crate::effects::{Effect, SensorLaw};
 use crate::exercise::{Exercise, Meter};
+use crate::order_meter::{OrderMeter, meter_for};
 use crate::rng::Rng;
 use crate::sim;
-use crate::visibility::{OrderMeter, Visibility};
+use crate::visibility::Visibility;
 use crate::{model_file, truth_file};
 use std::f64::consts::TAU;
 use std::fmt::Write as _;
@@ -144,7 +145,7 @@ fn simulate_recording(case: &Case, idx: usize) -> Result<Simulated, WriteError> 
     let mut reversed: Option<(f64, usize, f64)> = None;
     let ratios = case.truth.speed_ratios();
     let mut meter = Meter::for_case(case);
-    let mut orders = crate::visibility::meter_for(case, idx);
+    let mut orders = meter_for(case, idx);
     let mut clean = vec![0.0; c.stations.len()];
     let crank = case.truth.engine.node;
     sim::run(&case.truth, &plant, c.rate_hz, |t, y| {
