@@ -393,10 +393,7 @@ pub fn draw_attempt(seed: u64, class: Option<&str>, attempt: u64) -> Result<Case
                 _ => (1.0, 1.0),
             };
             // The user's model: seed 001 eq. 2, c = k·γ/(2π·ω) at the first mode.
-            user.connections[c].kind = Kind::Shaft {
-                stiffness: k,
-                damping: k * psi / (TAU * TAU * f1),
-            };
+            user.connections[c].kind = Kind::user_dashpot(k, psi, f1);
             let law = if rng.chance(0.5) {
                 form = "structural".into();
                 HystereticLaw::Structural

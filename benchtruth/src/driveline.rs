@@ -4,6 +4,7 @@
 //! own-shaft values, gear ratio = speed of `to` / speed of `from`).
 
 use nalgebra::{DMatrix, DVector, SymmetricEigen};
+use std::f64::consts::TAU;
 
 /// A rotating mass.
 #[derive(Debug, Clone)]
@@ -28,6 +29,18 @@ pub enum Kind {
         mesh_stiffness: f64,
         mesh_damping: f64,
     },
+}
+
+impl Kind {
+    /// The spring and viscous dashpot a user models a rubber stage of static stiffness
+    /// `stiffness` (N·m/rad) and relative damping `psi` by: seed 001 eq. 2,
+    /// c = k·ψ/(2π·ω) at the first mode `f1_hz` (N·m·s/rad).
+    pub fn user_dashpot(stiffness: f64, psi: f64, f1_hz: f64) -> Kind {
+        Kind::Shaft {
+            stiffness,
+            damping: stiffness * psi / (TAU * TAU * f1_hz),
+        }
+    }
 }
 
 /// A connection between two nodes (indices).
@@ -189,7 +202,7 @@ impl Driveline {
         let keep: Vec<usize> = order.into_iter().skip(1).collect();
         let freq_hz = keep
             .iter()
-            .map(|&i| eig.eigenvalues[i].max(0.0).sqrt() / std::f64::consts::TAU)
+            .map(|&i| eig.eigenvalues[i].max(0.0).sqrt() / TAU)
             .collect();
         let shapes = DMatrix::from_fn(n, keep.len(), |r, c| {
             eig.eigenvectors[(r, keep[c])] / m[r].sqrt()
@@ -201,13 +214,13 @@ impl Driveline {
     /// factor ψ/2π (strain-energy weighted), viscous terms as c/(2ω).
     pub fn modal_damping(&self, modes: &Modes, j: usize) -> f64 {
         let phi = modes.shapes.column(j);
-        let w = modes.freq_hz[j] * std::f64::consts::TAU;
+        let w = modes.freq_hz[j] * TAU;
         let mut num = 0.0;
         for c in &self.connections {
             let d = c.lever() * phi[c.from] - phi[c.to];
             num += match c.kind {
                 Kind::Shaft { damping, .. } => damping * w * d * d,
-                Kind::Rubber { stiffness, psi } => stiffness * psi / std::f64::consts::TAU * d * d,
+                Kind::Rubber { stiffness, psi } => stiffness * psi / TAU * d * d,
                 Kind::Gear { mesh_damping, .. } => mesh_damping * w * d * d,
             };
         }

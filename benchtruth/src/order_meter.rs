@@ -25,6 +25,8 @@ pub struct OrderMeter {
     window_len: usize,
     windows: Vec<Window>,
     samples: usize,
+    /// Scratch: e^{−ikθ} of the current sample per order, shared by every station.
+    phasors: Vec<(f64, f64)>,
 }
 
 /// The sums of one window; `x` is the position in the window, −½ to ½.
@@ -82,6 +84,7 @@ impl OrderMeter {
             window_len,
             windows: vec![window; n_samples / window_len],
             samples: 0,
+            phasors: vec![(0.0, 0.0); orders],
         }
     }
 
@@ -101,22 +104,24 @@ impl OrderMeter {
         win.w1 += w * x;
         win.w2 += w * x * x;
         win.ww += w * w;
-        // e^{−i·θ/2}, raised order by order (orders 0.5, 1, 1.5, … of the crank).
+        // e^{−i·θ/2}, raised order by order (orders 0.5, 1, 1.5, … of the crank), once
+        // per sample for the window's sums and every station's.
         let (s, c) = (-0.5 * crank_rad).sin_cos();
         let (mut re, mut im) = (c, s);
-        for (e0, e1) in win.e0.iter_mut().zip(win.e1.iter_mut()) {
+        for p in self.phasors.iter_mut() {
+            *p = (re, im);
+            (re, im) = (re * c - im * s, re * s + im * c);
+        }
+        for ((e0, e1), (re, im)) in win.e0.iter_mut().zip(win.e1.iter_mut()).zip(&self.phasors) {
             *e0 = (e0.0 + w * re, e0.1 + w * im);
             *e1 = (e1.0 + w * x * re, e1.1 + w * x * im);
-            (re, im) = (re * c - im * s, re * s + im * c);
         }
         for (k, (station, v)) in win.sums.iter_mut().zip(rpm).enumerate() {
             win.v0[k] += w * v;
             win.v1[k] += w * x * v;
-            let (mut re, mut im) = (c, s);
-            for sum in station.iter_mut() {
+            for (sum, (re, im)) in station.iter_mut().zip(&self.phasors) {
                 sum.0 += w * v * re;
                 sum.1 += w * v * im;
-                (re, im) = (re * c - im * s, re * s + im * c);
             }
         }
     }

@@ -20,15 +20,12 @@ pub fn twin(case: &Case) -> Option<Case> {
     match &case.effect {
         Effect::None | Effect::ParameterError => return None,
         Effect::Hysteretic { conn, .. } => {
-            // The user's dashpot for the stage, with the truth's stiffness: seed 001
-            // eq. 2 at the first mode, as `draw.rs` writes it into the user's model.
-            let f1 = case.truth.modes().freq_hz.first().copied()?;
+            // The user's dashpot for the stage, with the truth's stiffness, at the first
+            // mode the draw gave the user's model.
+            let f1 = case.modes_hz.first().copied()?;
             let c = &mut t.truth.connections[*conn];
             if let Kind::Rubber { stiffness, psi } = c.kind {
-                c.kind = Kind::Shaft {
-                    stiffness,
-                    damping: stiffness * psi / (TAU * TAU * f1),
-                };
+                c.kind = Kind::user_dashpot(stiffness, psi, f1);
             }
         }
         Effect::UnmodelledMode { host } => {

@@ -105,11 +105,25 @@ fn a_none_control_parses_back_and_holds_its_speeds() {
 /// mean speed 1.25 s into that run-up.
 #[test]
 fn a_crank_that_turns_backwards_is_drawn_again() {
+    let (_dir, files, _truth, first) = redrawn_case(100_585);
+    assert_eq!(first.matches("seed 100585 draw").count() as u64, files.draw);
+    assert!(
+        first.contains("seed 100585 draw 0: node `crank`")
+            && first.contains("nearly stops in `run-up`")
+            && first.contains("of its mean speed, outside 1 ± 0.75"),
+        "{first}"
+    );
+}
+
+/// Writes the case of `seed`, which must have been drawn again, into a directory removed
+/// when the returned guard drops: (guard, files, `truth.toml`, its `redrawn_because`).
+/// `truth.toml` names the draw written.
+fn redrawn_case(seed: u64) -> (tempfile::TempDir, benchtruth::CaseFiles, String, String) {
     let dir = tempfile::Builder::new()
-        .prefix("benchtruth-backwards-")
+        .prefix(&format!("benchtruth-redrawn-{seed}-"))
         .tempdir()
         .expect("temp dir");
-    let files = benchtruth::write_case(100_585, None, dir.path()).expect("redrawn");
+    let files = benchtruth::write_case(seed, None, dir.path()).expect("redrawn");
     assert!(files.draw >= 1, "draw {}", files.draw);
     let truth = std::fs::read_to_string(&files.truth).expect("truth.toml");
     assert_eq!(
@@ -118,14 +132,7 @@ fn a_crank_that_turns_backwards_is_drawn_again() {
         "{truth}"
     );
     let first = sidecar_value(&truth, "redrawn_because").expect("redrawn_because");
-    assert_eq!(first.matches("seed 100585 draw").count() as u64, files.draw);
-    assert!(
-        first.contains("seed 100585 draw 0: node `crank`")
-            && first.contains("nearly stops in `run-up`")
-            && first.contains("of its mean speed, outside 1 ± 0.75")
-            && first.contains("run-up"),
-        "{first}"
-    );
+    (dir, files, truth, first)
 }
 
 /// A draw whose campaign cannot show its effect is no case for a diagnosis: no reader
@@ -136,14 +143,7 @@ fn a_crank_that_turns_backwards_is_drawn_again() {
 /// draw shows its effect and says so in `[visibility]`.
 #[test]
 fn a_campaign_that_cannot_show_its_effect_is_drawn_again() {
-    let dir = tempfile::Builder::new()
-        .prefix("benchtruth-invisible-")
-        .tempdir()
-        .expect("temp dir");
-    let files = benchtruth::write_case(2104, None, dir.path()).expect("redrawn");
-    assert!(files.draw >= 1, "draw {}", files.draw);
-    let truth = std::fs::read_to_string(&files.truth).expect("truth.toml");
-    let first = sidecar_value(&truth, "redrawn_because").expect("redrawn_because");
+    let (_dir, files, truth, first) = redrawn_case(2104);
     assert!(
         first.contains("seed 2104 draw 0: the campaign cannot show its effect"),
         "{first}"
