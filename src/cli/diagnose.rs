@@ -414,6 +414,7 @@ mod tests {
                 before: 2.0,
                 after: 0.5,
                 validated_on: vec!["Regime C, 30 % load".into()],
+                swapped_because: None,
             },
             mismatch_map: vec![],
             unexplained_resonances: vec![],

@@ -207,6 +207,7 @@ mod tests {
                 before: 2.0,
                 after: 1.0,
                 validated_on: vec![],
+                swapped_because: None,
             },
             mismatch_map: vec![],
             unexplained_resonances: vec![],

@@ -71,6 +71,8 @@ pub struct Context<'a> {
     /// Recordings the user's model cannot simulate, by label, left out of `observed`
     /// ([`super::unsimulable`]).
     pub set_aside: Vec<super::unsimulable::SetAside>,
+    /// Why `held_out` is the other fold, when it is ([`super::holdout::swap_reason`]).
+    pub swapped_because: Option<String>,
 }
 
 impl<'a> Context<'a> {
@@ -86,6 +88,7 @@ impl<'a> Context<'a> {
             observed,
             prior_weight: 1.0,
             set_aside: Vec::new(),
+            swapped_because: None,
         }
     }
 }

@@ -161,13 +161,21 @@ fn verdict(out: &mut String, report: &Report) {
     };
     let _ = writeln!(
         out,
-        "<p class=\"fit\">{}: <b>{} → {}</b>{} on held-out data: {}</p></div>",
+        "<p class=\"fit\">{}: <b>{} → {}</b>{} on held-out data: {}</p>",
         escape(&f.metric),
         sig(f.before, 3),
         sig(f.after, 3),
         escape(&change),
         escape(&on)
     );
+    if let Some(why) = &f.swapped_because {
+        let _ = writeln!(
+            out,
+            "<p class=\"fit\">Held out the other fold: {}.</p>",
+            escape(why)
+        );
+    }
+    out.push_str("</div>\n");
 }
 
 /// One heatmap per station, in the order of the map.

@@ -195,6 +195,11 @@ pub struct Fit {
     pub after: f64,
     /// Labels of the held-out recordings (or parts: `"Regime C, long run (second half)"`).
     pub validated_on: Vec<String>,
+    /// Why the held-out split is the other fold, when it is
+    /// ([`super::holdout::swap_reason`]): the user's model fitted the usual held-out
+    /// recordings within the noise and missed the fitted ones.
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub swapped_because: Option<String>,
 }
 
 /// Measured against simulated along one held-out recording, one station and one order.

@@ -84,6 +84,7 @@ pub fn assemble(
             before,
             after,
             validated_on: validated_on(cx),
+            swapped_because: cx.swapped_because.clone(),
         },
         mismatch_map,
         unexplained_resonances: resonances(cx, baseline),

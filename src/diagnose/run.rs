@@ -73,6 +73,18 @@ pub fn diagnose(
     // The user's model as given, on every recording it can simulate; one it cannot is
     // set aside with its reason ([`super::unsimulable`]).
     let (mut cx, baseline) = context_and_baseline(model, options, observed)?;
+    // A held-out half the user's model already fits cannot judge anything: the other
+    // fold is held out instead ([`super::holdout::swap_reason`]), if it leaves both
+    // halves something.
+    if let Some(why) =
+        super::holdout::swap_reason(cx.chi2(&baseline, true), cx.chi2(&baseline, false))
+    {
+        let other = super::holdout::swapped(&cx.observed, &cx.held_out);
+        if super::holdout::check_split(&cx.observed, &other).is_ok() {
+            cx.held_out = other;
+            cx.swapped_because = Some(why);
+        }
+    }
     step(0.2, "fitting the plain parameters")?;
     let mut fitted = cx.plain_fit(&baseline, PLAIN_ROUNDS)?;
     // The campaign's model floor sets the prior's weight ([`super::context::Context::prior_weight`]); the

@@ -125,6 +125,7 @@ fn sample() -> Report {
             before: 3.1,
             after: 0.06,
             validated_on: vec!["Regime C".into(), "Long run (second half)".into()],
+            swapped_because: None,
         },
         mismatch_map: map,
         unexplained_resonances: vec![],

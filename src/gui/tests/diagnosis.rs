@@ -108,6 +108,7 @@ pub(super) fn report() -> Report {
             before: 9.5,
             after: 1.1,
             validated_on: vec!["Regime B".into()],
+            swapped_because: None,
         },
         mismatch_map: vec![
             cell("engine", 2.0, 3000.0, 7.5),

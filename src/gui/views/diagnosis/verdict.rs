@@ -56,6 +56,9 @@ pub fn verdict_ui(app: &mut TorsimApp, finished: &Finished, ui: &mut Ui) {
         f.before, f.after
     ))
     .on_hover_text(&f.metric);
+    if let Some(why) = &f.swapped_because {
+        ui.label(format!("Held out the other fold: {why}."));
+    }
     // A recording the model cannot simulate is in no number above: said here, not only
     // in the recordings table's role column.
     for sentence in r.recordings.iter().filter_map(|u| u.set_aside_sentence()) {
