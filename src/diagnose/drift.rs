@@ -180,6 +180,7 @@ fn exponential_chi2(v: &Blocks, tau_s: f64) -> f64 {
 mod tests {
     use super::*;
     use crate::diagnose::observe::{Observation, Run};
+    use crate::diagnose::test_fixtures;
 
     fn long_run(slope_rpm_per_s: f64) -> Observed {
         long_run_of(|t, _| 5.0 + slope_rpm_per_s * t, 0.1)
@@ -194,31 +195,22 @@ mod tests {
                 let t = 187.6 + 1.25 + 2.5 * f64::from(b);
                 let noise = if b % 2 == 0 { noise_rpm } else { -noise_rpm };
                 observations.push(Observation {
-                    run: 0,
-                    part: b as usize,
-                    station: "engine".into(),
-                    order,
                     speed_rpm: 3000.0,
                     time_s: t,
                     measured_rpm: amplitude(t - 187.6, order) + noise,
-                    sigma_rpm: 0.1,
-                    bias_sigma_rpm: 0.1,
+                    ..test_fixtures::observation(0, b as usize, "engine", order)
                 });
             }
         }
         Observed {
             runs: vec![Run {
-                label: "long run".into(),
-                regime: RunShape::LongRun { speed_rpm: 3000.0 },
-                load: 1.0,
                 duration_s: 20.0,
                 rate_hz: 2000.0,
-                reference: "engine".into(),
-                stations: vec!["engine".into()],
-                window_speeds_rpm: Vec::new(),
-                window_times_s: Vec::new(),
-                lines_per_rev: vec![None],
-                cycle_speeds_rpm: Vec::new(),
+                ..test_fixtures::run(
+                    "long run",
+                    RunShape::LongRun { speed_rpm: 3000.0 },
+                    "engine",
+                )
             }],
             observations,
             sample_noise_rpm: Vec::new(),

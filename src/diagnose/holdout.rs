@@ -155,35 +155,14 @@ pub fn roles(observed: &Observed, mask: &[bool]) -> Vec<String> {
 mod tests {
     use super::*;
     use crate::diagnose::observe::{Observation, Run};
+    use crate::diagnose::test_fixtures;
 
     fn run(label: &str, regime: RunShape) -> Run {
-        Run {
-            label: label.into(),
-            regime,
-            load: 1.0,
-            duration_s: 1.0,
-            rate_hz: 2048.0,
-            reference: "crank".into(),
-            stations: vec!["crank".into()],
-            window_speeds_rpm: Vec::new(),
-            window_times_s: Vec::new(),
-            lines_per_rev: vec![None],
-            cycle_speeds_rpm: Vec::new(),
-        }
+        test_fixtures::run(label, regime, "crank")
     }
 
     fn observation(run: usize, part: usize) -> Observation {
-        Observation {
-            run,
-            part,
-            station: "crank".into(),
-            order: 1.0,
-            speed_rpm: 1000.0,
-            time_s: 0.5,
-            measured_rpm: 1.0,
-            sigma_rpm: 0.1,
-            bias_sigma_rpm: 0.1,
-        }
+        test_fixtures::observation(run, part, "crank", 1.0)
     }
 
     #[test]

@@ -91,6 +91,8 @@ pub mod surrogate;
 mod svg;
 mod sweeps;
 #[cfg(test)]
+mod test_fixtures;
+#[cfg(test)]
 mod tests;
 #[cfg(test)]
 mod tests_guard;

@@ -120,34 +120,16 @@ fn with_reasons(e: DiagnoseError, set_aside: &[SetAside]) -> DiagnoseError {
 mod tests {
     use super::*;
     use crate::diagnose::observe::{Observation, RunShape, observe};
+    use crate::diagnose::test_fixtures;
 
     fn run(label: &str) -> Run {
-        Run {
-            label: label.into(),
-            regime: RunShape::Steady { speed_rpm: 1000.0 },
-            load: 1.0,
-            duration_s: 1.0,
-            rate_hz: 2048.0,
-            reference: "crank".into(),
-            stations: vec!["crank".into()],
-            window_speeds_rpm: Vec::new(),
-            window_times_s: Vec::new(),
-            lines_per_rev: vec![None],
-            cycle_speeds_rpm: Vec::new(),
-        }
+        test_fixtures::run(label, RunShape::Steady { speed_rpm: 1000.0 }, "crank")
     }
 
     fn observation(run: usize, order: f64) -> Observation {
         Observation {
-            run,
-            part: 0,
-            station: "crank".into(),
-            order,
-            speed_rpm: 1000.0,
-            time_s: 0.5,
             measured_rpm: run as f64 + order,
-            sigma_rpm: 0.1,
-            bias_sigma_rpm: 0.1,
+            ..test_fixtures::observation(run, 0, "crank", order)
         }
     }
 
