@@ -267,6 +267,35 @@ fn a_recording_set_aside_is_said_under_the_verdict() {
     h.get_by_label_contains("2 recordings");
 }
 
+/// When the folds were swapped (the user's model fits the usual held-out half and misses
+/// the other, `diagnose/holdout.rs`), the window says so under the held-out fit, with the
+/// library's own reason and both χ²/N; without a swap it says nothing of folds.
+#[test]
+fn a_swapped_fold_is_said_under_the_held_out_fit() {
+    let mut h = harness(bench());
+    h.state_mut()
+        .diagnosis
+        .show(Finished::new(bench(), report()));
+    h.step();
+    h.step();
+    assert!(
+        h.query_by_label_contains("Held out the other fold")
+            .is_none()
+    );
+
+    let mut r = report();
+    r.fit.swapped_because = crate::diagnose::holdout::swap_reason(1.405, 25.8);
+    assert!(r.fit.swapped_because.is_some(), "1.405 / 25.8 swaps");
+    h.state_mut().diagnosis.show(Finished::new(bench(), r));
+    h.step();
+    h.step();
+    h.get_by_label_contains(
+        "Held out the other fold: the user's model fits the usual held-out half",
+    );
+    h.get_by_label_contains("(χ²/N = 1.405)");
+    h.get_by_label_contains("(χ²/N = 25.800)");
+}
+
 /// "Save report…" writes the page for a person atomically: the verdict is in it and no
 /// temporary file is left; a folder that does not exist is an error naming the file.
 #[test]
