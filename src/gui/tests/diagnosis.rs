@@ -284,7 +284,7 @@ fn a_swapped_fold_is_said_under_the_held_out_fit() {
     );
 
     let mut r = report();
-    r.fit.swapped_because = crate::diagnose::holdout::swap_reason(1.405, 25.8);
+    r.fit.swapped_because = torsim::diagnose::holdout::swap_reason(1.405, 25.8);
     assert!(r.fit.swapped_because.is_some(), "1.405 / 25.8 swaps");
     h.state_mut().diagnosis.show(Finished::new(bench(), r));
     h.step();
