@@ -1,7 +1,9 @@
 //! A simulated run-up, in segments: a long run-up is most of a campaign's simulation, so
 //! it is cut into consecutive stretches of the measured ramp that run on different
-//! threads. Each segment settles at the speed where its lead-in starts and ramps at the
-//! measured rate from there, so lightly damped modes are passed transiently as in one
+//! threads. Each segment settles at the speed where its lead-in starts and follows the
+//! measured mean speed from there ([`crate::transient::MeasuredSpeed`]: a bench that
+//! lingers at a resonance is simulated lingering; the straight ramp when the recording
+//! has too few windows), so lightly damped modes are passed transiently as in one
 //! run of the whole ramp ([`crate::transient`]); the lead-in (on the same ramp, long
 //! enough for the slowest mode to decay, [`super::settling`]) is discarded. Each segment
 //! is analysed like the recording, and its STFT windows go to the speed bins of the
@@ -13,8 +15,9 @@ use super::observe_runup::{bin_means, bins};
 use crate::model::Model;
 use crate::recording::RunKind as RecKind;
 use crate::signal::analyse_with;
-use crate::transient::simulate;
+use crate::transient::{MeasuredSpeed, simulate, simulate_along};
 use std::collections::BTreeMap;
+use std::sync::Arc;
 
 /// Segments of a run-up at least [`SEGMENT_MIN_S`] long: fixed, not the thread count, so
 /// that a diagnosis gives the same numbers on any number of threads (each segment's
@@ -137,7 +140,13 @@ pub fn predict_segment(
         seg.decay_s,
         first,
     );
-    let sim = simulate(model, run_spec, options, &mut |_| true).map_err(|e| e.to_string())?;
+    // Driven along the measured speed where the windows give it (`MeasuredSpeed`): a
+    // bench that lingered at a resonance is simulated lingering there.
+    let sim = match MeasuredSpeed::from_windows(&run.window_times_s, &run.window_speeds_rpm) {
+        Some(m) => simulate_along(model, run_spec, options, Arc::new(m), start, &mut |_| true),
+        None => simulate(model, run_spec, options, &mut |_| true),
+    }
+    .map_err(|e| e.to_string())?;
     let rec = super::forward::station_recording(&sim, run, RecKind::RunUp)?;
     let pad = PAD_S.min(lead);
     let mut rec = slice(&rec, lead - pad, lead + seg.to_s - seg.from_s + PAD_S);

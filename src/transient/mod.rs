@@ -22,6 +22,7 @@ pub mod exact;
 mod exact_step;
 mod export;
 pub mod forces;
+pub mod measured_speed;
 pub mod observe;
 mod periodic_start;
 pub mod plant;
@@ -29,6 +30,7 @@ mod pressure;
 mod record;
 pub mod ros2;
 pub mod run;
+mod run_options;
 mod settle;
 pub mod speed;
 mod start;
@@ -37,8 +39,11 @@ pub mod validate;
 
 pub use error::TransientError;
 pub use export::to_recording;
+pub use measured_speed::MeasuredSpeed;
 pub use observe::{Chunk, Event};
-pub use run::{RunOptions, Simulation, simulate, simulate_observed};
+pub use run::{
+    RunOptions, Simulation, simulate, simulate_along, simulate_observed, simulate_observed_along,
+};
 pub use settle::Settling;
 pub use speed::SpeedProfile;
 pub use stepper::Method;

@@ -7,11 +7,13 @@ use super::budget::{StepBudget, bound_thermal_time_constants};
 use super::dopri::Dopri5;
 use super::exact::Exact;
 use super::forces::Scratch;
+use super::measured_speed::MeasuredSpeed;
 use super::observe::{Event, take_chunk};
 use super::periodic_start::add_periodic_state;
 use super::plant::{Plant, PlantLaw, Temperature};
 use super::record::{Recorder, empty_simulation};
 use super::ros2::Ros2;
+pub use super::run_options::RunOptions;
 use super::settle::{Course, SettleRule, Settling, checked_step, hold, settle};
 use super::speed::SpeedProfile;
 use super::start::initial_state;
@@ -21,71 +23,7 @@ use crate::model::Model;
 use crate::recording::Run;
 use crate::rubber::MaxwellChain;
 use std::f64::consts::TAU;
-
-/// How to run.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct RunOptions {
-    /// Engine load 0..1 (default 1).
-    pub load: f64,
-    /// Output rate, Hz (default 10240, seed 001's IAS rate).
-    pub rate_hz: f64,
-    /// Relative tolerance of the integrator (default 1e-5: a linear run then agrees with
-    /// the frequency domain within 0.03 %).
-    pub rtol: f64,
-    /// Cycle-to-cycle change of the speeds, relative to their vibration amplitude, below
-    /// which a run counts as settled (default 1e-4; never below 20 × `rtol`, the noise
-    /// floor of the integration).
-    pub settle_tolerance: f64,
-    /// Longest settling time before recording anyway, s (default 60).
-    pub max_settle_s: f64,
-    /// Shortest settling time, s, whatever the cycle-to-cycle change says (default 0).
-    /// The change compares whole states a cycle apart against the largest vibration, so
-    /// a start transient of a lightly damped mode at a few 0.1 % of it passes the
-    /// tolerance, yet leaks into the orders that an engine hardly excites, where a bench
-    /// measures noise (see [`crate::diagnose`]'s forward model, which settles for the
-    /// slowest mode's decay).
-    pub min_settle_s: f64,
-    /// Time the start speed is held after settling and before recording, s, with every
-    /// state free, a self-heating rubber's temperature too (default 0). Settling holds
-    /// the temperature; a bench holds a regime a while before it records, and a stage at
-    /// a resonance warms and detunes meanwhile (benchtruth case 2050: a stage losing
-    /// 1 kW at 1020 rpm). The recorded time starts after the hold.
-    pub hold_s: f64,
-    /// Integrator (default: explicit unless the model is stiff).
-    pub method: Method,
-    /// Steps per working cycle at the run's highest speed that the integrator must take
-    /// at least (default 180: 4° of crank on a four-stroke engine).
-    pub min_steps_per_cycle: f64,
-    /// Rubber Maxwell arms that relax faster than this, Hz, run as their low-frequency
-    /// limit, a dashpot ([`MaxwellChain::take_fast_arms`]; default `None`:
-    /// every arm is integrated). For runs of which only frequencies below a third of it
-    /// matter: the fastest arms bound the explicit integrator's step.
-    pub viscous_above_hz: Option<f64>,
-    /// Step budget: by simulated time `t` the run may take at most this × `(t / h_max +
-    /// 1000)` steps, `h_max` the largest step [`RunOptions::min_steps_per_cycle`] allows;
-    /// a run beyond it stops with [`TransientError::StepBudget`], which names the element
-    /// holding it back (default `None`: [`crate::limits::Limits::step_budget_factor`], 200;
-    /// well-posed runs take 1–3×).
-    pub step_budget_factor: Option<f64>,
-}
-
-impl Default for RunOptions {
-    fn default() -> Self {
-        Self {
-            load: 1.0,
-            rate_hz: 10240.0,
-            rtol: 1e-5,
-            settle_tolerance: 1e-4,
-            max_settle_s: 60.0,
-            min_settle_s: 0.0,
-            hold_s: 0.0,
-            method: Method::Auto,
-            min_steps_per_cycle: 180.0,
-            viscous_above_hz: None,
-            step_budget_factor: None,
-        }
-    }
-}
+use std::sync::Arc;
 
 /// A recorded simulation: what a bench would have measured, and more.
 #[derive(Debug, Clone)]
@@ -140,6 +78,34 @@ pub fn simulate(
             Event::Chunk(_) => true,
         },
         false,
+        None,
+    )
+}
+
+/// Runs run-up `run` like [`simulate`], its mean speed after settling along the measured
+/// trajectory `speed` from its time `from_s` on ([`SpeedProfile::along`]) instead of the
+/// straight line between `run`'s end speeds: a recording's run-up simulated as the bench
+/// ran it (the diagnosis' forward model, [`crate::diagnose`]). It settles at the
+/// trajectory's speed at `from_s`; a steady `run` ignores `speed`.
+pub fn simulate_along(
+    model: &Model,
+    run: Run,
+    options: RunOptions,
+    speed: Arc<MeasuredSpeed>,
+    from_s: f64,
+    progress: &mut dyn FnMut(f64) -> bool,
+) -> Result<Simulation, TransientError> {
+    let run = along_run(run, &speed, from_s);
+    run_recorded(
+        model,
+        run,
+        options,
+        &mut |event| match event {
+            Event::Progress(f) => progress(f),
+            Event::Chunk(_) => true,
+        },
+        false,
+        Some((speed, from_s)),
     )
 }
 
@@ -152,20 +118,56 @@ pub fn simulate_observed(
     options: RunOptions,
     observer: &mut dyn FnMut(Event) -> bool,
 ) -> Result<Simulation, TransientError> {
-    run_recorded(model, run, options, observer, true)
+    run_recorded(model, run, options, observer, true, None)
+}
+
+/// [`simulate_observed`] along a measured trajectory, as [`simulate_along`]: the GUI's
+/// run matching a run-up recording streams as the diagnosis simulates it.
+pub fn simulate_observed_along(
+    model: &Model,
+    run: Run,
+    options: RunOptions,
+    speed: Arc<MeasuredSpeed>,
+    from_s: f64,
+    observer: &mut dyn FnMut(Event) -> bool,
+) -> Result<Simulation, TransientError> {
+    let run = along_run(run, &speed, from_s);
+    run_recorded(model, run, options, observer, true, Some((speed, from_s)))
+}
+
+/// A ramp `run` with the end speeds of `speed` from its time `from_s` over the run's
+/// duration; a steady one as it is.
+fn along_run(run: Run, speed: &MeasuredSpeed, from_s: f64) -> Run {
+    if run.is_ramp() {
+        let at = |t: f64| speed.speed_rpm(t);
+        Run::ramp(at(from_s), at(from_s + run.duration_s), run.duration_s)
+    } else {
+        run
+    }
 }
 
 /// [`simulate_observed`], sending [`Event::Chunk`]s only when `chunks` (the progress
-/// events are the same either way).
+/// events are the same either way), a ramp `along` a measured trajectory from its time
+/// `.1` on when given.
 fn run_recorded(
     model: &Model,
     run: Run,
     options: RunOptions,
     observer: &mut dyn FnMut(Event) -> bool,
     chunks: bool,
+    along: Option<(Arc<MeasuredSpeed>, f64)>,
 ) -> Result<Simulation, TransientError> {
     let [from_rpm, to_rpm] = run.speeds_rpm();
     let duration_s = run.duration_s;
+    // The fastest the run goes: a measured trajectory may pass its end speeds between them.
+    let top_rpm =
+        along
+            .as_ref()
+            .filter(|_| run.is_ramp())
+            .map_or(from_rpm.max(to_rpm), |(m, from_s)| {
+                m.max_speed_rpm(*from_s, from_s + duration_s)
+                    .max(from_rpm.max(to_rpm))
+            });
     check_run(model, run, &options)?;
     let mut plant = Plant::new(model, options.load, options.viscous_above_hz)?;
     let cycle_rad = plant.engine.as_ref().map_or(2.0 * TAU, |e| e.cycle_rad);
@@ -188,7 +190,7 @@ fn run_recorded(
     }
     let atol = tolerances(&plant);
     let cycle_s = |rpm: f64| cycle_rad / (rpm * TAU / 60.0);
-    let h_max = cycle_s(from_rpm.max(to_rpm)) / options.min_steps_per_cycle.max(1.0);
+    let h_max = cycle_s(top_rpm) / options.min_steps_per_cycle.max(1.0);
     let warnings = bound_thermal_time_constants(&mut plant, h_max);
     let plant = plant;
     let budget = StepBudget {
@@ -276,7 +278,10 @@ fn run_recorded(
     }
     let t0 = solver.t();
     if run.is_ramp() {
-        profile = SpeedProfile::ramp(from_rpm, to_rpm, t0, duration_s);
+        profile = match along {
+            Some((speed, from_s)) => SpeedProfile::along(speed, from_s, t0, duration_s),
+            None => SpeedProfile::ramp(from_rpm, to_rpm, t0, duration_s),
+        };
     }
     let samples = (duration_s * options.rate_hz).round() as usize;
     let mut sim = empty_simulation(&plant, samples, settling);

@@ -1,10 +1,14 @@
-//! The mean rotation: constant speed, or a linear ramp between two speeds.
+//! The mean rotation: constant speed, a linear ramp between two speeds, or a recording's
+//! own measured speed ([`MeasuredSpeed`]).
 
+use super::measured_speed::MeasuredSpeed;
 use std::f64::consts::TAU;
+use std::sync::Arc;
 
 /// Mean speed of the reference shaft over time: `from_rpm` until `start_s`, a linear ramp
-/// to `to_rpm` over `duration_s`, then `to_rpm`.
-#[derive(Debug, Clone, Copy, PartialEq)]
+/// to `to_rpm` over `duration_s`, then `to_rpm`; or, with `along`, from `start_s` on the
+/// measured trajectory.
+#[derive(Debug, Clone, PartialEq)]
 pub struct SpeedProfile {
     /// Speed before the ramp, rpm.
     pub from_rpm: f64,
@@ -14,6 +18,9 @@ pub struct SpeedProfile {
     pub start_s: f64,
     /// Ramp duration, s (0: a step is never used; steady runs have from = to).
     pub duration_s: f64,
+    /// From `start_s` on, the mean speed of a recording instead of the line, read from
+    /// its time `.1` (s) on (default `None`).
+    pub along: Option<(Arc<MeasuredSpeed>, f64)>,
 }
 
 impl SpeedProfile {
@@ -24,6 +31,7 @@ impl SpeedProfile {
             to_rpm: speed_rpm,
             start_s: 0.0,
             duration_s: 0.0,
+            along: None,
         }
     }
 
@@ -34,6 +42,21 @@ impl SpeedProfile {
             to_rpm,
             start_s,
             duration_s,
+            along: None,
+        }
+    }
+
+    /// From `start_s` on, the measured trajectory `speed` from its time `from_s` on
+    /// (before `start_s`, its speed there): a simulated run-up driven as the bench ran.
+    pub fn along(speed: Arc<MeasuredSpeed>, from_s: f64, start_s: f64, duration_s: f64) -> Self {
+        let from_rpm = speed.speed_rpm(from_s);
+        let to_rpm = speed.speed_rpm(from_s + duration_s);
+        Self {
+            from_rpm,
+            to_rpm,
+            start_s,
+            duration_s,
+            along: Some((speed, from_s)),
         }
     }
 
@@ -41,8 +64,13 @@ impl SpeedProfile {
     pub fn at(&self, t: f64) -> (f64, f64, f64) {
         let w0 = self.from_rpm * TAU / 60.0;
         let w1 = self.to_rpm * TAU / 60.0;
-        if t <= self.start_s || self.duration_s <= 0.0 {
+        if t <= self.start_s || (self.duration_s <= 0.0 && self.along.is_none()) {
             return (w0 * t, w0, 0.0);
+        }
+        if let Some((speed, from_s)) = &self.along {
+            let (a0, _, _) = speed.at(*from_s);
+            let (a, w, alpha) = speed.at(from_s + t - self.start_s);
+            return (w0 * self.start_s + a - a0, w, alpha);
         }
         let alpha = (w1 - w0) / self.duration_s;
         let tr = (t - self.start_s).min(self.duration_s);
@@ -81,5 +109,26 @@ mod tests {
             p.at(t_end).0
         );
         assert!((p.speed_rpm(1.5) - 1200.0).abs() < 1e-9);
+    }
+
+    /// Along a measured straight ramp, the profile is the linear ramp: same angle, speed
+    /// and acceleration, before it and on it.
+    #[test]
+    fn along_a_straight_measured_ramp_is_the_ramp() {
+        // Windows every 0.05 s of a 600 rpm/s ramp from 600 rpm; read from 1.0 s on.
+        let times: Vec<f64> = (1..80).map(|k| 0.05 * k as f64).collect();
+        let speeds: Vec<f64> = times.iter().map(|t| 600.0 + 600.0 * t).collect();
+        let m = MeasuredSpeed::from_windows(&times, &speeds).expect("long enough");
+        let along = SpeedProfile::along(Arc::new(m), 1.0, 0.5, 2.0);
+        let line = SpeedProfile::ramp(1200.0, 2400.0, 0.5, 2.0);
+        for t in [0.0, 0.3, 0.5, 0.9, 1.7, 2.5] {
+            let (a, b) = (along.at(t), line.at(t));
+            assert!((a.0 - b.0).abs() < 1e-9, "angle at {t}: {a:?} vs {b:?}");
+            assert!(
+                (a.1 - b.1).abs() < 1e-9 && (a.2 - b.2).abs() < 1e-9,
+                "at {t}"
+            );
+        }
+        assert!((along.from_rpm - 1200.0).abs() < 1e-9 && (along.to_rpm - 2400.0).abs() < 1e-9);
     }
 }

@@ -16,6 +16,7 @@ use torsim::physics::System;
 use torsim::recording::Run;
 use torsim::recording::{Recording, RunShape, classify, read_recording};
 use torsim::signal::{Analysis, AnalysisOptions, analyse_with};
+use torsim::transient::MeasuredSpeed;
 
 /// A recording as the traces panel shows it.
 #[derive(Debug)]
@@ -32,6 +33,10 @@ pub struct RecordingView {
     pub spectrograms: Option<Arc<SpectrogramSet>>,
     /// The simulated run that matches it.
     pub regime: Run,
+    /// A run-up's measured mean speed, which the matching run follows (as the diagnosis
+    /// simulates it, `torsim::transient::MeasuredSpeed`); `None` for a steady run or too
+    /// few STFT windows.
+    pub measured_speed: Option<Arc<MeasuredSpeed>>,
     /// Relative speed across each rubber stage whose two sides were measured, rpm, named
     /// as the time traces name it: `(name, samples)`.
     pub relative: Vec<(String, Vec<f64>)>,
@@ -41,7 +46,8 @@ pub struct RecordingView {
 
 impl RecordingView {
     /// The mean speed of station `node` at `t_s` from the first sample, rpm: its measured
-    /// mean in a steady run, `ratio` × the fitted ramp in a run-up.
+    /// mean in a steady run, `ratio` × the measured mean speed in a run-up (the fitted
+    /// ramp when it has too few windows).
     pub fn mean_speed_at(&self, node: &str, ratio: Option<f64>) -> impl Fn(f64) -> f64 + use<> {
         let mean = self
             .analysis
@@ -50,8 +56,11 @@ impl RecordingView {
             .find(|s| s.name == node)
             .map_or(0.0, |s| s.mean_speed_rpm);
         let (regime, ratio) = (self.regime, ratio.unwrap_or(1.0));
+        let along = self.measured_speed.clone();
         move |t| {
-            if regime.is_ramp() {
+            if let Some(m) = along.as_ref().filter(|_| regime.is_ramp()) {
+                ratio * m.speed_rpm(t)
+            } else if regime.is_ramp() {
                 ratio * profile_rpm(regime, t)
             } else {
                 mean
@@ -155,12 +164,21 @@ fn read(path: &Path, nodes: &[String], options: &AnalysisOptions) -> Result<Reco
         stations.join(", ")
     );
     let max_hz = max_frequency_hz(&analysis);
+    let measured_speed = analysis
+        .stft
+        .as_ref()
+        .filter(|_| regime.is_ramp())
+        .and_then(|s| {
+            let times: Vec<f64> = s.times_s.iter().map(|t| t - t0_s).collect();
+            MeasuredSpeed::from_windows(&times, &s.speeds_rpm).map(Arc::new)
+        });
     Ok(RecordingView {
         file,
         t0_s,
         spectrograms: SpectrogramSet::new(&analysis, t0_s, max_hz).map(Arc::new),
         analysis,
         regime,
+        measured_speed,
         relative: Vec::new(),
         summary,
         recording,

@@ -4,6 +4,7 @@
 
 use std::sync::Arc;
 use torsim::recording::Run;
+use torsim::transient::MeasuredSpeed;
 
 /// What the GUI asks the worker to run in time.
 #[derive(Debug, Clone, PartialEq)]
@@ -50,6 +51,9 @@ pub struct TraceLayout {
     pub label: String,
     /// What is run.
     pub kind: Run,
+    /// The measured mean speed a run-up follows, when it matches a recording (see
+    /// [`super::recording_job::RecordingView::measured_speed`]); `None`: the line.
+    pub along: Option<Arc<MeasuredSpeed>>,
     /// Engine load 0..1.
     pub load: f64,
     /// Reference node name.
@@ -65,7 +69,10 @@ pub struct TraceLayout {
 impl TraceLayout {
     /// Imposed mean speed of the reference at `t_s` from the start of recording, rpm.
     pub fn speed_at(&self, t_s: f64) -> f64 {
-        profile_rpm(self.kind, t_s)
+        match &self.along {
+            Some(m) if self.kind.is_ramp() => m.speed_rpm(t_s),
+            _ => profile_rpm(self.kind, t_s),
+        }
     }
 
     /// The time range a plot opens on and a double-click returns to, s: the whole run.

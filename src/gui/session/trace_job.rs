@@ -16,7 +16,9 @@ use torsim::model::Model;
 use torsim::physics::System;
 use torsim::recording::Run;
 use torsim::signal::{Analysis, analyse_with};
-use torsim::transient::{Event, RunOptions, TransientError, simulate_observed, to_recording};
+use torsim::transient::{
+    Event, RunOptions, TransientError, simulate_observed, simulate_observed_along, to_recording,
+};
 
 /// Longest wait between two chunks sent to the window.
 pub const SEND_EVERY: Duration = Duration::from_millis(200);
@@ -109,6 +111,11 @@ pub fn run(
         generation,
         Payload::TraceRunning(label.clone()),
     ));
+    // The run matching a run-up recording follows its measured mean speed.
+    let along = match spec {
+        TraceSpec::MatchRecording => recording.and_then(|r| r.measured_speed.clone()),
+        TraceSpec::Run(_) => None,
+    };
     let mut builder: Option<SeriesBuilder> = None;
     let mut pending = TraceChunk::default();
     let mut last_sent = Instant::now();
@@ -123,7 +130,7 @@ pub fn run(
             }
             Event::Chunk(chunk) => {
                 let b = builder.get_or_insert_with(|| {
-                    let b = SeriesBuilder::new(
+                    let mut b = SeriesBuilder::new(
                         model,
                         system,
                         kind,
@@ -132,6 +139,7 @@ pub fn run(
                         &chunk,
                         visible_nodes,
                     );
+                    b.layout.along = along.clone();
                     send(SimResult::new(
                         generation,
                         Payload::TraceStarted(Arc::new(b.layout.clone())),
@@ -151,7 +159,11 @@ pub fn run(
         }
         !stale()
     };
-    let sim = match simulate_observed(model, kind, options, &mut observer) {
+    let simulated = match along.clone() {
+        Some(m) => simulate_observed_along(model, kind, options, m, 0.0, &mut observer),
+        None => simulate_observed(model, kind, options, &mut observer),
+    };
+    let sim = match simulated {
         Ok(sim) => sim,
         Err(TransientError::Cancelled { .. }) => {
             return send(SimResult::new(generation, Payload::Cancelled));

@@ -158,6 +158,7 @@ impl SeriesBuilder {
         let layout = TraceLayout {
             label,
             kind,
+            along: None,
             load,
             reference: names[system.reference_node].clone(),
             cycle_rev: f64::from(model.strokes()) / 2.0,
