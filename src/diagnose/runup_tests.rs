@@ -135,6 +135,12 @@ fn segmented_run_up_passes_a_light_mode_like_one_run() {
     let rec = truth(&model, from, to, duration);
     let observed = observe(&[rec], 8.0).unwrap();
     assert!(matches!(observed.runs[0].regime, RunShape::Ramp { .. }));
+    // The run's own speed loop lags through the resonance, 1.5 % from its line: below
+    // `FOLLOW_ABOVE`, so the forward model runs the line (followed, it lags twice).
+    let r = &observed.runs[0];
+    let m = crate::transient::MeasuredSpeed::from_windows(&r.window_times_s, &r.window_speeds_rpm)
+        .expect("12 s of windows");
+    assert!((0.01..0.02).contains(&m.departure_from_line()) && !m.departs());
     let simulated = predict(&model, &observed, 8.0, 2, None).unwrap();
     let (diff, peak) = worst(&observed, &simulated, 2.0);
     assert!(peak > 10.0, "the crossing must show: peak {peak} rpm");

@@ -10,7 +10,8 @@
 //! ramp passes the same resonance in 0.4 s; even the bench's true model then fitted
 //! χ²/N 237 on the run-up, and hysteretic damping was named for what was a timing.
 //!
-//! So the run-up is driven along the measured speed: the recording's STFT window speeds
+//! So a run-up that departs from a straight ramp by more than [`FOLLOW_ABOVE`] is driven
+//! along the measured speed: the recording's STFT window speeds
 //! (their centres and mean reference speeds, as the order analysis bins them), smoothed
 //! by a local straight-line fit over [`SPAN_S`] around knots [`KNOT_S`] apart, which
 //! gives each knot a speed and a slope, joined by cubic Hermite pieces: the speed and the
@@ -27,6 +28,15 @@ pub const KNOT_S: f64 = 0.25;
 /// Span of the local straight-line fit at each knot, s: eleven periods of a 22 Hz first
 /// mode, whose swing leaks into a single 0.1 s window's mean speed.
 pub const SPAN_S: f64 = 0.5;
+
+/// Departure from a straight ramp ([`MeasuredSpeed::departure_from_line`]) above which a
+/// run-up is worth following: 2 % of its speed. A simulated run's own speed loop lags
+/// through a lightly damped resonance too: torsim's run-up through a 0.7 % mode
+/// (`diagnose/runup_tests.rs`) departs 1.5 % from its line, and a run driven along that
+/// measured speed lags once more, 6.5 % of the peak off in a bin where the line is 1.5 %.
+/// Case 3114 departs 3.2 %; of the 64 run-ups of development seeds 3000–3109, five depart
+/// more than 2 % (2.4–4.4 %).
+pub const FOLLOW_ABOVE: f64 = 0.02;
 
 /// A smoothed mean-speed trajectory: knots from `start_s`, [`KNOT_S`] apart.
 #[derive(Debug, Clone, PartialEq)]
@@ -132,6 +142,37 @@ impl MeasuredSpeed {
         );
         let (angle, speed, accel) = piece(w0, a0, w1, a1, KNOT_S, u);
         (self.angle_rad[k] + angle, speed, accel)
+    }
+
+    /// The largest departure of the knots from the least-squares line through them,
+    /// relative to their mean speed: how far the run was from a straight ramp.
+    pub fn departure_from_line(&self) -> f64 {
+        let n = self.speed_rad_s.len() as f64;
+        let t: Vec<f64> = (0..self.speed_rad_s.len())
+            .map(|k| k as f64 * KNOT_S)
+            .collect();
+        let (mt, mw) = (
+            t.iter().sum::<f64>() / n,
+            self.speed_rad_s.iter().sum::<f64>() / n,
+        );
+        let stt: f64 = t.iter().map(|x| (x - mt).powi(2)).sum();
+        let stw: f64 = t
+            .iter()
+            .zip(&self.speed_rad_s)
+            .map(|(x, w)| (x - mt) * (w - mw))
+            .sum();
+        let slope = if stt > 0.0 { stw / stt } else { 0.0 };
+        let worst = t
+            .iter()
+            .zip(&self.speed_rad_s)
+            .map(|(x, w)| (w - mw - slope * (x - mt)).abs())
+            .fold(0.0, f64::max);
+        if mw > 0.0 { worst / mw } else { f64::INFINITY }
+    }
+
+    /// Whether the run departs from a straight ramp by more than [`FOLLOW_ABOVE`].
+    pub fn departs(&self) -> bool {
+        self.departure_from_line() > FOLLOW_ABOVE
     }
 
     /// Speed at recording time `t_s`, rpm.

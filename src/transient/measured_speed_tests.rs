@@ -26,6 +26,7 @@ fn lingering(t: f64) -> f64 {
 fn a_straight_ramp_is_reproduced_exactly() {
     let (times, speeds) = windows(10.0, |t| 800.0 + 37.0 * t);
     let m = MeasuredSpeed::from_windows(&times, &speeds).expect("long enough");
+    assert!(m.departure_from_line() < 1e-12 && !m.departs());
     let to_rad = TAU / 60.0;
     for t in [0.0, 0.05, 1.3, 4.99, 9.95, 11.0] {
         let (angle, speed, accel) = m.at(t);
@@ -77,6 +78,8 @@ fn a_lingering_run_is_followed() {
         assert!(e < 1e-9, "{t} s: {} vs {}", m.speed_rpm(t), lingering(t));
     }
     assert!((m.speed_rpm(3.6) - 859.9).abs() < 1e-9);
+    // 60 rpm behind the line at the end of the plateau, on a mean of ~900 rpm.
+    assert!(m.departure_from_line() > 0.03 && m.departs());
     // Through the corners a 0.5 s line rounds them: a line fitted across a corner of
     // slope change Δ over span S misses it by Δ·S/8, 170 rpm/s · 0.5 s / 8 = 10.6 rpm at
     // the catch-up's start (0 to 170 rpm/s), and the catch-up's end lies in the same

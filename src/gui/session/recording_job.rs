@@ -34,8 +34,8 @@ pub struct RecordingView {
     /// The simulated run that matches it.
     pub regime: Run,
     /// A run-up's measured mean speed, which the matching run follows (as the diagnosis
-    /// simulates it, `torsim::transient::MeasuredSpeed`); `None` for a steady run or too
-    /// few STFT windows.
+    /// simulates it, `torsim::transient::MeasuredSpeed`); `None` for a steady run, too
+    /// few STFT windows, or a run within 2 % of a straight ramp (`FOLLOW_ABOVE`).
     pub measured_speed: Option<Arc<MeasuredSpeed>>,
     /// Relative speed across each rubber stage whose two sides were measured, rpm, named
     /// as the time traces name it: `(name, samples)`.
@@ -170,7 +170,9 @@ fn read(path: &Path, nodes: &[String], options: &AnalysisOptions) -> Result<Reco
         .filter(|_| regime.is_ramp())
         .and_then(|s| {
             let times: Vec<f64> = s.times_s.iter().map(|t| t - t0_s).collect();
-            MeasuredSpeed::from_windows(&times, &s.speeds_rpm).map(Arc::new)
+            MeasuredSpeed::from_windows(&times, &s.speeds_rpm)
+                .filter(MeasuredSpeed::departs)
+                .map(Arc::new)
         });
     Ok(RecordingView {
         file,
