@@ -3,9 +3,10 @@
 //! threads. Each segment settles at the speed where its lead-in starts and follows the
 //! measured mean speed from there ([`crate::transient::MeasuredSpeed`]: a bench that
 //! lingers at a resonance is simulated lingering; the straight ramp when the run departs
-//! from one by less than [`crate::transient::measured_speed::FOLLOW_ABOVE`]), so lightly damped modes are passed transiently as in one
-//! run of the whole ramp ([`crate::transient`]); the lead-in (on the same ramp, long
-//! enough for the slowest mode to decay, [`super::settling`]) is discarded. Each segment
+//! from one by less than [`crate::transient::measured_speed::FOLLOW_ABOVE`]), so lightly
+//! damped modes are passed transiently as in one run of the whole ramp
+//! ([`crate::transient`]); the lead-in (on the same ramp, long enough for the slowest
+//! mode to decay, [`super::settling`]) is discarded. Each segment
 //! is analysed like the recording, and its STFT windows go to the speed bins of the
 //! measured windows nearest in time; the bins' sums and window counts of all segments add
 //! up.
@@ -143,8 +144,7 @@ pub fn predict_segment(
     // Driven along the measured speed where the run departs from a straight ramp
     // (`MeasuredSpeed::departs`): a bench that lingered at a resonance is simulated
     // lingering there.
-    let measured = MeasuredSpeed::from_windows(&run.window_times_s, &run.window_speeds_rpm);
-    let sim = match measured.filter(MeasuredSpeed::departs) {
+    let sim = match MeasuredSpeed::to_follow(&run.window_times_s, &run.window_speeds_rpm) {
         Some(m) => simulate_along(model, run_spec, options, Arc::new(m), start, &mut |_| true),
         None => simulate(model, run_spec, options, &mut |_| true),
     }

@@ -144,6 +144,15 @@ impl MeasuredSpeed {
         (self.angle_rad[k] + angle, speed, accel)
     }
 
+    /// The trajectory of [`MeasuredSpeed::from_windows`] when the run [`departs`] from a
+    /// straight ramp, so that a simulation should follow it; `None` otherwise. The one
+    /// rule the diagnosis' forward model and the GUI's matching run share.
+    ///
+    /// [`departs`]: MeasuredSpeed::departs
+    pub fn to_follow(times_s: &[f64], speeds_rpm: &[f64]) -> Option<Self> {
+        Self::from_windows(times_s, speeds_rpm).filter(Self::departs)
+    }
+
     /// The largest departure of the knots from the least-squares line through them,
     /// relative to their mean speed: how far the run was from a straight ramp.
     pub fn departure_from_line(&self) -> f64 {

@@ -68,18 +68,7 @@ pub fn simulate(
     options: RunOptions,
     progress: &mut dyn FnMut(f64) -> bool,
 ) -> Result<Simulation, TransientError> {
-    // Nobody reads the chunks: the run does not assemble them.
-    run_recorded(
-        model,
-        run,
-        options,
-        &mut |event| match event {
-            Event::Progress(f) => progress(f),
-            Event::Chunk(_) => true,
-        },
-        false,
-        None,
-    )
+    run_quiet(model, run, options, progress, None)
 }
 
 /// Runs run-up `run` like [`simulate`], its mean speed after settling along the measured
@@ -95,7 +84,18 @@ pub fn simulate_along(
     from_s: f64,
     progress: &mut dyn FnMut(f64) -> bool,
 ) -> Result<Simulation, TransientError> {
-    let run = along_run(run, &speed, from_s);
+    run_quiet(model, run, options, progress, Some((speed, from_s)))
+}
+
+/// [`run_recorded`] reporting only the fraction done to `progress`: nobody reads the
+/// chunks, so the run does not assemble them.
+fn run_quiet(
+    model: &Model,
+    run: Run,
+    options: RunOptions,
+    progress: &mut dyn FnMut(f64) -> bool,
+    along: Option<(Arc<MeasuredSpeed>, f64)>,
+) -> Result<Simulation, TransientError> {
     run_recorded(
         model,
         run,
@@ -105,7 +105,7 @@ pub fn simulate_along(
             Event::Chunk(_) => true,
         },
         false,
-        Some((speed, from_s)),
+        along,
     )
 }
 
@@ -131,7 +131,6 @@ pub fn simulate_observed_along(
     from_s: f64,
     observer: &mut dyn FnMut(Event) -> bool,
 ) -> Result<Simulation, TransientError> {
-    let run = along_run(run, &speed, from_s);
     run_recorded(model, run, options, observer, true, Some((speed, from_s)))
 }
 
@@ -148,7 +147,7 @@ fn along_run(run: Run, speed: &MeasuredSpeed, from_s: f64) -> Run {
 
 /// [`simulate_observed`], sending [`Event::Chunk`]s only when `chunks` (the progress
 /// events are the same either way), a ramp `along` a measured trajectory from its time
-/// `.1` on when given.
+/// `.1` on when given (its end speeds then the trajectory's, [`along_run`]).
 fn run_recorded(
     model: &Model,
     run: Run,
@@ -157,6 +156,9 @@ fn run_recorded(
     chunks: bool,
     along: Option<(Arc<MeasuredSpeed>, f64)>,
 ) -> Result<Simulation, TransientError> {
+    let run = along
+        .as_ref()
+        .map_or(run, |(speed, from_s)| along_run(run, speed, *from_s));
     let [from_rpm, to_rpm] = run.speeds_rpm();
     let duration_s = run.duration_s;
     // The fastest the run goes: a measured trajectory may pass its end speeds between them.

@@ -58,7 +58,7 @@ impl RecordingView {
         let (regime, ratio) = (self.regime, ratio.unwrap_or(1.0));
         let along = self.measured_speed.clone();
         move |t| {
-            if let Some(m) = along.as_ref().filter(|_| regime.is_ramp()) {
+            if let Some(m) = &along {
                 ratio * m.speed_rpm(t)
             } else if regime.is_ramp() {
                 ratio * profile_rpm(regime, t)
@@ -170,9 +170,7 @@ fn read(path: &Path, nodes: &[String], options: &AnalysisOptions) -> Result<Reco
         .filter(|_| regime.is_ramp())
         .and_then(|s| {
             let times: Vec<f64> = s.times_s.iter().map(|t| t - t0_s).collect();
-            MeasuredSpeed::from_windows(&times, &s.speeds_rpm)
-                .filter(MeasuredSpeed::departs)
-                .map(Arc::new)
+            MeasuredSpeed::to_follow(&times, &s.speeds_rpm).map(Arc::new)
         });
     Ok(RecordingView {
         file,
