@@ -2,9 +2,10 @@
 //! parameters, screen every candidate effect, verify the promising ones in the time
 //! domain, score on held-out data, decide.
 
-use super::context::Evaluated;
+use super::context::{Context, Evaluated};
 use super::observe::observe;
 use super::restart::second_starts;
+use super::rounds::Stepped;
 use super::screen::{Screened, screen_one};
 use super::searched::{Campaign, searched};
 use super::unsimulable::context_and_baseline;
@@ -86,28 +87,21 @@ pub fn diagnose(
         }
     }
     step(0.2, "fitting the plain parameters")?;
-    let mut fitted = cx.plain_fit(&baseline, PLAIN_ROUNDS)?;
-    // The campaign's model floor sets the prior's weight ([`super::context::Context::prior_weight`]); the
-    // plain fit is redone with it, and every candidate is fitted with it.
-    let floor = cx.chi2(&fitted.best, false);
-    if floor > REWEIGH_FLOOR {
-        cx.prior_weight = floor.sqrt();
-        step(
-            0.25,
-            "refitting the plain parameters against the model floor",
-        )?;
-        let refit = cx.plain_fit(&baseline, PLAIN_ROUNDS)?;
-        // A refit that never left the user's values (every proposal lost to them in the
-        // time domain) does not discard the first fit: the surrogate's proposals from the
-        // user's values can all land beside a narrow valley the first fit's rounds had
-        // found (benchtruth case 101289 before the analysis' anti-aliasing: first fit
-        // χ²/N 3.66 on the fitted data, the refit's two proposals 47.6 and 45.7 against
-        // the user's 30.8, and the plain parameters stayed at 1).
-        if refit.best.factors != baseline.factors {
-            fitted = refit;
-        } else {
-            // Its rejected steps are still reported (issue 14, item 2).
-            fitted.rejected.extend(refit.rejected);
+    let mut fitted = reweighed_plain_fit(&mut cx, &baseline, &mut step)?;
+    // A held-out half the plain parameters fit while they miss the half they were
+    // fitted to cannot judge a candidate either: the folds are swapped and the plain
+    // parameters fitted again ([`super::holdout::swap_after_plain`]).
+    if cx.swapped_because.is_none() {
+        let (held, own) = (cx.chi2(&fitted.best, true), cx.chi2(&fitted.best, false));
+        if let Some(why) = super::holdout::swap_after_plain(held, own) {
+            let other = super::holdout::swapped(&cx.observed, &cx.held_out);
+            if super::holdout::check_split(&cx.observed, &other).is_ok() {
+                cx.held_out = other;
+                cx.swapped_because = Some(why);
+                cx.prior_weight = 1.0;
+                step(0.25, "fitting the plain parameters to the other half")?;
+                fitted = reweighed_plain_fit(&mut cx, &baseline, &mut step)?;
+            }
         }
     }
     let cx = cx;
@@ -218,4 +212,38 @@ pub fn diagnose(
     );
     step(1.0, "done")?;
     Ok(report)
+}
+
+/// The plain fit of `cx` from `baseline`, redone with the prior reweighed by the
+/// campaign's model floor when its fitted χ²/N exceeds [`REWEIGH_FLOOR`]; `cx` keeps
+/// that weight, which every candidate is then fitted with
+/// ([`super::context::Context::prior_weight`]).
+fn reweighed_plain_fit(
+    cx: &mut Context,
+    baseline: &Evaluated,
+    step: &mut dyn FnMut(f64, &str) -> Result<(), DiagnoseError>,
+) -> Result<Stepped, DiagnoseError> {
+    let mut fitted = cx.plain_fit(baseline, PLAIN_ROUNDS)?;
+    let floor = cx.chi2(&fitted.best, false);
+    if floor > REWEIGH_FLOOR {
+        cx.prior_weight = floor.sqrt();
+        step(
+            0.25,
+            "refitting the plain parameters against the model floor",
+        )?;
+        let refit = cx.plain_fit(baseline, PLAIN_ROUNDS)?;
+        // A refit that never left the user's values (every proposal lost to them in the
+        // time domain) does not discard the first fit: the surrogate's proposals from the
+        // user's values can all land beside a narrow valley the first fit's rounds had
+        // found (benchtruth case 101289 before the analysis' anti-aliasing: first fit
+        // χ²/N 3.66 on the fitted data, the refit's two proposals 47.6 and 45.7 against
+        // the user's 30.8, and the plain parameters stayed at 1).
+        if refit.best.factors != baseline.factors {
+            fitted = refit;
+        } else {
+            // Its rejected steps are still reported (issue 14, item 2).
+            fitted.rejected.extend(refit.rejected);
+        }
+    }
+    Ok(fitted)
 }
