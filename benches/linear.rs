@@ -47,6 +47,7 @@ fn rubber(from: &str, to: &str, k: f64, psi: f64, frequency_poly: Option<Poly>) 
             psi,
             temperature_c: 25.0,
             amplitude_poly: None,
+            amplitude_saturation: None,
             amplitude_form: Default::default(),
             frequency_poly,
             frequency_power_law: None,

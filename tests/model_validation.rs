@@ -463,3 +463,55 @@ fn gear_mesh_damping_checks() {
     let model = parse_model(&ok, "ok.toml").unwrap();
     assert!(validate(&model).is_ok());
 }
+
+#[test]
+fn amplitude_saturation_checks() {
+    let sat = "psi = 1.0\namplitude_saturation = { stiffening = 0.3, deformation_mm = 0.5 }";
+    let good = with(&replaced(RUBBER, "psi = 1.0", sat));
+    let m = parse_model(&good, "test.toml").expect("a saturating stage reads");
+    let stage = m
+        .connections
+        .iter()
+        .find(|c| c.name == "r")
+        .expect("stage r");
+    let torsim::model::ConnectionKind::Rubber(r) = &stage.kind else {
+        panic!("a rubber stage");
+    };
+    let law = r.amplitude_saturation.expect("the law");
+    assert_eq!((law.stiffening, law.deformation_mm), (0.3, 0.5));
+    // Written and read back, the same model.
+    let again = torsim::model::to_toml_string(&m);
+    assert_eq!(parse_model(&again, "again.toml").expect("reads back"), m);
+    let bad = replaced(&good, "deformation_mm = 0.5", "deformation_mm = 0");
+    fails(
+        &bad,
+        "connection[1].amplitude_saturation.deformation_mm",
+        "amplitude_saturation",
+        "deformation_mm 0 must be > 0",
+    );
+    let both = replaced(
+        &good,
+        "psi = 1.0",
+        "psi = 1.0\namplitude_poly = [0.0152, 0.0033, 1.0]",
+    );
+    fails(
+        &both,
+        "connection[1].amplitude_saturation",
+        "amplitude_saturation",
+        "not both",
+    );
+    let direct = replaced(
+        &good,
+        "elements = { count = 8, per_side = 4, pitch_diameter = 0.3, radial_stiffness = 6.4e5 }",
+        "stiffness = 1e4",
+    );
+    fails(
+        &direct,
+        "connection[1].amplitude_saturation",
+        "amplitude_saturation",
+        "needs `elements`",
+    );
+    let unknown = replaced(&good, "deformation_mm", "deformation");
+    let e = common::error(&unknown);
+    assert!(e.to_string().contains("deformation"), "{e}");
+}

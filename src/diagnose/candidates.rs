@@ -90,6 +90,9 @@ impl Candidate {
         if self.param.key == "a1" && super::candidates_amplitude::is_elastic(self) {
             return Some(super::candidates_amplitude::LINEAR_FORM);
         }
+        if self.param.key == "stiffening" && super::candidates_amplitude::is_elastic(self) {
+            return Some(super::candidates_amplitude::SATURATING_FORM);
+        }
         if let Some(form) = super::candidates_backlash::contact_form(self) {
             return Some(form);
         }

@@ -58,8 +58,14 @@ pub fn effect_sentence(effect: &str, p: &BTreeMap<String, ParameterValue>) -> St
             }
         }
         "coupling_amplitude_nonlinearity" => {
-            // The elastic form fitted in `a1` has `a2` = 0: α_x = a1·x + 1.
+            // The elastic form fitted in `a1` has `a2` = 0: α_x = a1·x + 1; the saturating
+            // form has `stiffening` and `saturation_mm`.
             let law = match (number(p, "a1"), number(p, "a2")) {
+                _ if number(p, "stiffening").is_some() => format!(
+                    "1 + {}·tanh((x/{})²) (saturating)",
+                    number(p, "stiffening").map_or("s".into(), sig),
+                    number(p, "saturation_mm").map_or("x_s".into(), sig)
+                ),
                 (Some(a1), Some(0.0)) => format!("{}·x + 1", sig(a1)),
                 (_, a2) => format!("{}·x² + 1", a2.map_or("a₂".into(), sig)),
             };

@@ -84,6 +84,7 @@ pub(crate) fn hysteretic(
         psi: 1.0,
         temperature_c: 25.0,
         amplitude_poly: None,
+        amplitude_saturation: None,
         amplitude_form: Default::default(),
         frequency_poly: None,
         frequency_power_law: None,

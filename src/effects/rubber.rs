@@ -7,7 +7,8 @@ use super::EffectError;
 use super::effect::{EffectSpec, Params};
 use super::truth::{Applied, mode_frequencies_hz};
 use crate::model::{
-    AmplitudeForm, ConnectionKind, Model, Poly, RubberElements, RubberStage, RubberStiffness,
+    AmplitudeForm, AmplitudeSaturation, ConnectionKind, Model, Poly, RubberElements, RubberStage,
+    RubberStiffness,
 };
 
 /// Seed 000 eq. 1: α_x(x) = 0.0152 x² + 0.0033 x + 1, x in mm.
@@ -27,6 +28,9 @@ pub const A2_MAX_PER_MM2: f64 = 1.0e4;
 /// stage whose elements deform by 0.01 mm by 100 % at that bound); as much softening
 /// below zero.
 pub const A1_MAX_PER_MM: f64 = 100.0;
+/// The largest `stiffening` s of the saturating amplitude law the effect takes: 3, a stage
+/// four times as stiff once its elements bear on their housing.
+pub const MAX_SATURATED_STIFFENING: f64 = 3.0;
 /// Seed 000 eq. 9: α_f(f) = −0.000023 f² + 0.01519 f + 1, f in Hz (measured 50–300 Hz).
 pub const SEED_FREQUENCY_POLY: [f64; 3] = [-0.000023, 0.01519, 1.0];
 
@@ -80,7 +84,9 @@ pub(super) fn stage_without_frequency_law<'m>(
 }
 
 /// `coupling_amplitude_nonlinearity`: α_x(x) = a2·x² + a1·x + 1 (default seed 000 eq. 1),
-/// on the whole stage (`form = whole`, default: the damping scales with it, eq. 13–15) or
+/// or, with `saturation_mm` x_s given, the saturating law 1 + s·tanh((x/x_s)²) with
+/// `stiffening` s (default 0.3, up to [`MAX_SATURATED_STIFFENING`];
+/// [`crate::model::amplitude_saturation`]), on the whole stage (`form = whole`, default: the damping scales with it, eq. 13–15) or
 /// on its elastic spring only (`form = elastic`, [`AmplitudeForm::Elastic`]).
 /// A stage given by `stiffness` is first written as 8 elements, 4 per side, on pitch
 /// diameter `pitch_diameter_m` (default 0.2 m) with the same static stiffness. `a2` is
@@ -88,7 +94,15 @@ pub(super) fn stage_without_frequency_law<'m>(
 pub(crate) fn amplitude(model: &mut Model, spec: &EffectSpec) -> Result<Applied, EffectError> {
     let mut p = Params::new(
         spec,
-        &["connection", "a2", "a1", "pitch_diameter_m", "form"],
+        &[
+            "connection",
+            "a2",
+            "a1",
+            "pitch_diameter_m",
+            "form",
+            "stiffening",
+            "saturation_mm",
+        ],
     )?;
     let j = stage_index(model, &mut p)?;
     // Read only when given, so the seed form resolves to the same keys as before.
@@ -100,8 +114,26 @@ pub(crate) fn amplitude(model: &mut Model, spec: &EffectSpec) -> Result<Applied,
                 .ok_or_else(|| p.bad("form", format!("`{key}`: expected whole or elastic")))?
         }
     };
-    let a2 = p.number("a2", SEED_AMPLITUDE_POLY[0], 0.0, A2_MAX_PER_MM2)?;
-    let a1 = p.number("a1", SEED_AMPLITUDE_POLY[1], -A1_MAX_PER_MM, A1_MAX_PER_MM)?;
+    let saturation = match p.optional_number("saturation_mm", 1e-9, 1e3)? {
+        None => None,
+        Some(deformation_mm) => {
+            if spec.params.contains_key("a2") || spec.params.contains_key("a1") {
+                return Err(p.bad("saturation_mm", "give either a2/a1 or saturation_mm"));
+            }
+            let stiffening = p.number("stiffening", 0.3, 0.0, MAX_SATURATED_STIFFENING)?;
+            Some(AmplitudeSaturation {
+                stiffening,
+                deformation_mm,
+            })
+        }
+    };
+    let (a2, a1) = match saturation {
+        Some(_) => (0.0, 0.0),
+        None => (
+            p.number("a2", SEED_AMPLITUDE_POLY[0], 0.0, A2_MAX_PER_MM2)?,
+            p.number("a1", SEED_AMPLITUDE_POLY[1], -A1_MAX_PER_MM, A1_MAX_PER_MM)?,
+        ),
+    };
     let direct = match &stage_mut(model, j)?.stiffness {
         RubberStiffness::Direct(k) => Some(*k),
         RubberStiffness::Elements(_) => None,
@@ -121,23 +153,35 @@ pub(crate) fn amplitude(model: &mut Model, spec: &EffectSpec) -> Result<Applied,
         stage_mut(model, j)?.stiffness = RubberStiffness::Elements(e);
     }
     let stage = stage_mut(model, j)?;
-    if stage.amplitude_poly.is_some() {
-        return Err(p.bad("connection", "the stage already has amplitude_poly"));
+    if stage.has_amplitude_law() {
+        return Err(p.bad("connection", "the stage already has an amplitude law"));
     }
-    stage.amplitude_poly = Some(Poly {
-        coeffs: [a2, a1, 1.0],
-        range: None,
-    });
+    match saturation {
+        Some(law) => stage.amplitude_saturation = Some(law),
+        None => {
+            stage.amplitude_poly = Some(Poly {
+                coeffs: [a2, a1, 1.0],
+                range: None,
+            })
+        }
+    }
     stage.amplitude_form = form;
     let name = &model.connections[j].name;
     let what = match form {
         AmplitudeForm::Whole => "stiffness and damping",
         AmplitudeForm::Elastic => "elastic stiffness only, damping the user's",
     };
-    let summary = format!(
-        "rubber stage `{name}` stiffens with the element deformation x (mm): \
-         α_x = {a2}·x² + {a1}·x + 1 (seed 000 eq. 1 form) on its {what}"
-    );
+    let summary = match saturation {
+        Some(s) => format!(
+            "rubber stage `{name}` stiffens with the element deformation x (mm) and \
+             saturates: α_x = 1 + {}·tanh((x/{})²) on its {what}",
+            s.stiffening, s.deformation_mm
+        ),
+        None => format!(
+            "rubber stage `{name}` stiffens with the element deformation x (mm): \
+             α_x = {a2}·x² + {a1}·x + 1 (seed 000 eq. 1 form) on its {what}"
+        ),
+    };
     Ok((p.resolved, summary))
 }
 

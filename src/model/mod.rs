@@ -4,6 +4,7 @@
 //! seed 000 ([`rubber`]) and the presets shipped in the binary ([`presets`]).
 
 pub mod amplitude_form;
+pub mod amplitude_saturation;
 pub mod engine_types;
 pub mod error;
 pub mod frequency_law;
@@ -27,6 +28,7 @@ pub mod validate_scale;
 pub mod write;
 
 pub use amplitude_form::AmplitudeForm;
+pub use amplitude_saturation::AmplitudeSaturation;
 pub use engine_types::*;
 pub use error::ModelError;
 pub use frequency_law::PowerLaw;

@@ -13,8 +13,9 @@ use super::key_lines::{KeyLines, Lines};
 use super::read_sections::{engine, expect, harmonic, load, operation};
 use super::spanned::Tab;
 use super::{
-    AmplitudeForm, Connection, ConnectionKind, Expect, Gear, Inertia, Model, Operation, Poly,
-    PowerLaw, RubberElements, RubberStage, RubberStiffness, Shaft, Thermal, ZenerLaw,
+    AmplitudeForm, AmplitudeSaturation, Connection, ConnectionKind, Expect, Gear, Inertia, Model,
+    Operation, Poly, PowerLaw, RubberElements, RubberStage, RubberStiffness, Shaft, Thermal,
+    ZenerLaw,
 };
 use super::{ModelError, validate};
 
@@ -183,6 +184,7 @@ fn connection(t: &Tab) -> Result<Connection, ModelError> {
                 "amplitude_poly",
                 "amplitude_poly_range",
                 "amplitude_form",
+                "amplitude_saturation",
                 "frequency_poly",
                 "frequency_poly_range",
                 "frequency_power_law",
@@ -295,6 +297,16 @@ fn rubber(t: &Tab) -> Result<ConnectionKind, ModelError> {
             })
         }
     };
+    let amplitude_saturation = match t.opt_table("amplitude_saturation")? {
+        None => None,
+        Some(h) => {
+            h.allow(&["stiffening", "deformation_mm"])?;
+            Some(AmplitudeSaturation {
+                stiffening: h.f64("stiffening")?,
+                deformation_mm: h.f64("deformation_mm")?,
+            })
+        }
+    };
     let amplitude_form = match t.opt_str("amplitude_form")? {
         None => AmplitudeForm::default(),
         Some(key) => AmplitudeForm::from_key(&key).ok_or_else(|| {
@@ -309,6 +321,7 @@ fn rubber(t: &Tab) -> Result<ConnectionKind, ModelError> {
         psi: t.f64("psi")?,
         temperature_c: t.f64_or("temperature_c", 25.0)?,
         amplitude_poly: amplitude?,
+        amplitude_saturation,
         amplitude_form,
         frequency_poly: frequency?,
         frequency_power_law,

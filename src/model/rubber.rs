@@ -235,6 +235,12 @@ impl RubberStage {
         }
     }
 
+    /// Whether the stage stiffens with its deformation: `amplitude_poly` or
+    /// `amplitude_saturation` given.
+    pub fn has_amplitude_law(&self) -> bool {
+        self.amplitude_poly.is_some() || self.amplitude_saturation.is_some()
+    }
+
     /// Radial deformation of an element in mm for a twist across the stage in rad:
     /// `x = |Δθ| · D/2 · 1000`. Zero when the stage has no elements.
     pub fn radial_deformation_mm(&self, twist_rad: f64) -> f64 {
@@ -252,12 +258,14 @@ impl RubberStage {
     ) -> RubberState {
         let mut warnings = Vec::new();
         let x_mm = self.radial_deformation_mm(twist_rad);
-        let (alpha_x, alpha_x_tangent) = match (&self.amplitude_poly, self.pitch_radius_m()) {
-            (Some(p), Some(_)) => {
+        let law = (&self.amplitude_poly, &self.amplitude_saturation);
+        let (alpha_x, alpha_x_tangent) = match (law, self.pitch_radius_m()) {
+            ((Some(p), _), Some(_)) => {
                 let secant = factor(Some(p), Factor::Amplitude, x_mm, &mut warnings);
                 // d(α_x(x)·x)/dx = α_x(x) + x·α_x'(x); held α_x outside the range.
                 (secant, secant + x_mm * p.derivative(x_mm))
             }
+            ((None, Some(s)), Some(_)) => (s.secant(x_mm), s.tangent(x_mm)),
             _ => (1.0, 1.0),
         };
         let alpha_f = match (frequency_hz, &self.frequency_power_law) {
@@ -313,7 +321,7 @@ impl RubberStage {
         if torque_nm == 0.0 {
             return Some(0.0);
         }
-        if self.amplitude_poly.is_none() || self.pitch_radius_m().is_none() {
+        if !self.has_amplitude_law() || self.pitch_radius_m().is_none() {
             return Some(torque_nm / k_lin);
         }
         let target = torque_nm.abs();

@@ -188,6 +188,9 @@ pub struct RubberStage {
     pub temperature_c: f64,
     /// α_x(x), x the element's radial deformation in mm (seed 000 eq. 1); needs elements.
     pub amplitude_poly: Option<Poly>,
+    /// A saturating α_x in place of `amplitude_poly` (issue 14,
+    /// [`super::amplitude_saturation`]): `1 + s·tanh((x/x_s)²)`; needs elements.
+    pub amplitude_saturation: Option<super::AmplitudeSaturation>,
     /// What α_x scales (`amplitude_form`, default [`AmplitudeForm::Whole`]).
     pub amplitude_form: AmplitudeForm,
     /// α_f(f), f the vibration frequency in Hz (seed 000 eq. 9).

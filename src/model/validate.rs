@@ -249,10 +249,28 @@ fn rubber(key: &str, r: &RubberStage) -> Check {
             "`amplitude_poly` needs `elements` (the deformation is measured at the elements)",
         )?;
     }
-    if r.amplitude_form != AmplitudeForm::default() && r.amplitude_poly.is_none() {
+    if let Some(law) = &r.amplitude_saturation {
+        if let Some((sub, why)) = law.problem() {
+            fail(k(&format!("amplitude_saturation.{sub}")), why)?;
+        }
+        if matches!(r.stiffness, RubberStiffness::Direct(_)) {
+            fail(
+                k("amplitude_saturation"),
+                "`amplitude_saturation` needs `elements` (the deformation is measured at the \
+                 elements)",
+            )?;
+        }
+        if r.amplitude_poly.is_some() {
+            fail(
+                k("amplitude_saturation"),
+                "give either `amplitude_poly` or `amplitude_saturation`, not both",
+            )?;
+        }
+    }
+    if r.amplitude_form != AmplitudeForm::default() && !r.has_amplitude_law() {
         fail(
             k("amplitude_form"),
-            "`amplitude_form` is given without `amplitude_poly`",
+            "`amplitude_form` is given without `amplitude_poly` or `amplitude_saturation`",
         )?;
     }
     let polys = [

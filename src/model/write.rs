@@ -200,6 +200,13 @@ fn rubber(out: &mut String, r: &RubberStage) {
         ];
         kv(out, "frequency_zener", inline(&fields));
     }
+    if let Some(law) = &r.amplitude_saturation {
+        let fields = [
+            ("stiffening", num(law.stiffening)),
+            ("deformation_mm", num(law.deformation_mm)),
+        ];
+        kv(out, "amplitude_saturation", inline(&fields));
+    }
     if r.amplitude_form != AmplitudeForm::default() {
         kv(out, "amplitude_form", string(r.amplitude_form.key()));
     }

@@ -308,6 +308,7 @@ mod tests {
                 coeffs: [a2, 0.0, 1.0],
                 range: None,
             }),
+            amplitude_saturation: None,
             amplitude_form: form,
             frequency_poly: None,
             frequency_power_law: None,
@@ -372,6 +373,39 @@ mod tests {
         // Loss modulus: scaled by the stiffening (whole), the user's k0·ξ (elastic).
         assert!((eta_w - xi).abs() < 1e-12);
         assert!((eta_e * k_e - xi * k0).abs() < 1e-12 * xi * k0, "{eta_e}");
+    }
+
+    #[test]
+    fn a_saturating_stage_stiffens_by_its_tangent_at_the_static_twist() {
+        // k0 = 5e4 N·m/rad, α_x = 1 + s·tanh(u), u = (x/x_s)², x = 100·θ mm. At
+        // T = 150 N·m the linear twist is 3 mrad (x = 0.3 mm, u ≈ 1.4: in the bend). The
+        // storage is the tangent k0·(α_x + 2·s·u·sech²u).
+        let (k0, s, x_s, torque) = (5.0e4, 0.4, 0.25, 150.0);
+        let mut stage = cubic_stage(0.0, AmplitudeForm::Elastic);
+        stage.amplitude_poly = None;
+        stage.amplitude_saturation = Some(crate::model::AmplitudeSaturation {
+            stiffening: s,
+            deformation_mm: x_s,
+        });
+        let mut w = Vec::new();
+        let (law, twist) = rubber_law(&stage, "c", torque, 25.0, 1.0, &mut w).unwrap();
+        let u = (100.0 * twist / x_s).powi(2);
+        assert!(u > 0.5 && u < 2.0, "in the bend: u = {u}");
+        assert!((k0 * (1.0 + s * u.tanh()) * twist - torque).abs() < 1e-9 * torque);
+        let tangent = k0 * (1.0 + s * u.tanh() + 2.0 * s * u / u.cosh().powi(2));
+        let el = Element {
+            connection: 0,
+            from_dof: Some(0),
+            to_dof: None,
+            torque_ratio: 1.0,
+            law,
+        };
+        let (k, eta) = el.stiffness_at(40.0);
+        // The twist is solved to 1e-9 relative; the tangent follows it to ~1e-9.
+        assert!((k - tangent).abs() < 1e-8 * tangent, "{k} vs {tangent}");
+        // Elastic form: the loss modulus stays the user's k0·ξ.
+        let xi = 0.6 / std::f64::consts::TAU;
+        assert!((eta * k - xi * k0).abs() < 1e-12 * xi * k0, "{eta}");
     }
 
     #[test]

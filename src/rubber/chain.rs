@@ -285,6 +285,7 @@ mod tests {
             psi: 1.0,
             temperature_c: 25.0,
             amplitude_poly: None,
+            amplitude_saturation: None,
             amplitude_form: Default::default(),
             frequency_poly,
             frequency_power_law: None,

@@ -100,6 +100,7 @@ mod tests {
             psi,
             temperature_c: 25.0,
             amplitude_poly: None,
+            amplitude_saturation: None,
             amplitude_form: Default::default(),
             frequency_poly: Some(Poly {
                 coeffs: [a2, 0.0, 1.0],

@@ -240,11 +240,15 @@ fn rubber_state(
         Temperature::Fixed(t) => t,
         Temperature::Thermal { state, .. } => y[state],
     };
-    let (alpha_x, tangent) = match (&r.amplitude_poly, r.mm_per_rad) {
-        (Some(p), Some(mm)) => {
+    let (alpha_x, tangent) = match (&r.amplitude_poly, &r.amplitude_saturation, r.mm_per_rad) {
+        (Some(p), _, Some(mm)) => {
             let x = twist_own.abs() * mm;
             let secant = p.eval(x);
             (secant, secant + x * p.derivative(x))
+        }
+        (None, Some(s), Some(mm)) => {
+            let x = twist_own.abs() * mm;
+            (s.secant(x), s.tangent(x))
         }
         _ => (1.0, 1.0),
     };
@@ -304,6 +308,7 @@ mod tests {
                 coeffs: [a2, 0.0, 1.0],
                 range: None,
             }),
+            amplitude_saturation: None,
             amplitude_form: form,
             temperature_stiffness_poly: None,
             temperature_damping_poly: None,
@@ -347,6 +352,25 @@ mod tests {
                 (k_eq - expected).abs() < 1e-12 * expected,
                 "{form:?}: {k_eq} vs {expected}"
             );
+        }
+    }
+
+    #[test]
+    fn a_saturating_stage_carries_its_secant_law_at_every_twist() {
+        // T = k0·(1 + s·tanh((x/x_s)²))·φ, x = 100·|φ| mm, from the quadratic start to
+        // saturation, either sign (closed form; only rounding remains).
+        let (k0, s, x_s) = (5.0e4, 0.4, 0.25);
+        let mut plant = cubic_plant(0.0, AmplitudeForm::Elastic, Vec::new());
+        plant.amplitude_poly = None;
+        plant.amplitude_saturation = Some(crate::model::AmplitudeSaturation {
+            stiffening: s,
+            deformation_mm: x_s,
+        });
+        for phi in [1e-4, -1e-3, 2.5e-3, 4e-3, -2e-2] {
+            let u = (100.0 * phi / x_s).powi(2);
+            let expected = k0 * (1.0 + s * u.tanh()) * phi;
+            let t = rubber_state(&plant, [phi, 0.0], 1.0, &[], None).torque_ref_nm;
+            assert!((t - expected).abs() < 1e-12 * expected.abs(), "{phi}: {t}");
         }
     }
 

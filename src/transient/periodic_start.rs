@@ -76,7 +76,10 @@ pub fn add_periodic_state(
 /// [`super::forces`] applies it) and no gear mesh with free play.
 fn linear_about_static_state(plant: &Plant) -> bool {
     plant.elements.iter().all(|e| match &e.law {
-        PlantLaw::Rubber(r) => r.amplitude_poly.is_none() || r.mm_per_rad.is_none(),
+        PlantLaw::Rubber(r) => {
+            (r.amplitude_poly.is_none() && r.amplitude_saturation.is_none())
+                || r.mm_per_rad.is_none()
+        }
         PlantLaw::Backlash { half_gap_rad, .. } => *half_gap_rad == 0.0,
         PlantLaw::Linear { .. } => true,
     })

@@ -21,6 +21,8 @@ pub struct RubberPlant {
     pub mm_per_rad: Option<f64>,
     /// α_x(x), x in mm of element deformation.
     pub amplitude_poly: Option<Poly>,
+    /// A saturating α_x in place of `amplitude_poly`.
+    pub amplitude_saturation: Option<crate::model::AmplitudeSaturation>,
     /// What α_x scales: the whole stage or its equilibrium spring only.
     pub amplitude_form: AmplitudeForm,
     /// α_Tc(T).
@@ -362,6 +364,7 @@ impl Plant {
                             static_stiffness_nm_per_rad: stage.static_stiffness_nm_per_rad(),
                             mm_per_rad: stage.pitch_radius_m().map(|r| r * 1000.0),
                             amplitude_poly: stage.amplitude_poly.clone(),
+                            amplitude_saturation: stage.amplitude_saturation,
                             amplitude_form: stage.amplitude_form,
                             temperature_stiffness_poly: stage.temperature_stiffness_poly.clone(),
                             temperature_damping_poly: stage.temperature_damping_poly.clone(),

@@ -45,6 +45,7 @@ pub fn rubber(from: &str, to: &str, k: f64, psi: f64) -> Connection {
             psi,
             temperature_c: 25.0,
             amplitude_poly: None,
+            amplitude_saturation: None,
             amplitude_form: Default::default(),
             frequency_poly: None,
             frequency_power_law: None,
@@ -82,6 +83,7 @@ pub fn seed000_stage(elements: RubberElements, psi: f64, temperature_c: f64) -> 
             coeffs: [0.0152, 0.0033, 1.0],
             range: None,
         }),
+        amplitude_saturation: None,
         amplitude_form: Default::default(),
         frequency_poly: Some(Poly {
             coeffs: [-0.000023, 0.01519, 1.0],

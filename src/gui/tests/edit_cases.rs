@@ -54,6 +54,13 @@ fn thermal(m: &mut Model) -> &mut Thermal {
     })
 }
 
+fn saturation(deformation_mm: f64) -> torsim::model::AmplitudeSaturation {
+    torsim::model::AmplitudeSaturation {
+        stiffening: 0.3,
+        deformation_mm,
+    }
+}
+
 fn rating(m: &mut Model) -> &mut torsim::model::CouplingRating {
     rubber(m, 7)
         .rating
@@ -103,6 +110,13 @@ pub fn cases() -> Vec<(Model, Breaker)> {
                 coeffs: [0.0, 0.0, -1.0],
                 range: None,
             })
+        }),
+        // cng-genset's coupling has an amplitude_poly: a saturating law beside it is
+        // refused at the table, a zero deformation at its field.
+        Box::new(|m| rubber(m, 7).amplitude_saturation = Some(saturation(1.0))),
+        Box::new(|m| {
+            rubber(m, 7).amplitude_poly = None;
+            rubber(m, 7).amplitude_saturation = Some(saturation(0.0));
         }),
         Box::new(|m| thermal(m).capacity_j_per_k = 0.0),
         Box::new(|m| thermal(m).conductance_w_per_k = 0.0),

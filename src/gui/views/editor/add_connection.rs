@@ -97,6 +97,7 @@ pub fn add_ui(ui: &mut Ui, cx: &mut EditCtx, model: &mut Model) {
                     psi: 1.0,
                     temperature_c: 25.0,
                     amplitude_poly: None,
+                    amplitude_saturation: None,
                     amplitude_form: Default::default(),
                     frequency_poly: None,
                     frequency_power_law: None,

@@ -1,12 +1,13 @@
 //! A rubber coupling stage (seed 000): static stiffness given directly or assembled from
 //! its elements (eq. 12), relative damping ψ, temperature, the correction polynomials
-//! ([`crate::gui::views::editor::rubber_polys`]) and the optional self-heating model.
+//! ([`crate::gui::views::editor::rubber_polys`]), the optional saturating amplitude law
+//! ([`torsim::model::amplitude_saturation`]) and the optional self-heating model.
 
 use crate::gui::views::editor::fields::{self, EditCtx, end_row};
 use crate::gui::views::editor::rubber_polys::{self, POLYS};
 use crate::gui::views::editor::widgets;
 use egui::Ui;
-use torsim::model::{RubberElements, RubberStage, RubberStiffness, Thermal};
+use torsim::model::{AmplitudeSaturation, RubberElements, RubberStage, RubberStiffness, Thermal};
 
 /// The rubber stage's rows in its connection's grid.
 pub fn rubber_ui(ui: &mut Ui, cx: &mut EditCtx, key: &str, name: &str, r: &mut RubberStage) {
@@ -126,6 +127,7 @@ pub fn rubber_ui(ui: &mut Ui, cx: &mut EditCtx, key: &str, name: &str, r: &mut R
     for (info, poly) in POLYS.iter().zip(polys) {
         rubber_polys::poly_ui(ui, cx, key, name, info, poly);
     }
+    saturation_ui(ui, cx, key, name, &mut r.amplitude_saturation);
     thermal_ui(ui, cx, key, name, &mut r.thermal);
     crate::gui::views::editor::rating::rating_ui(ui, cx, key, name, &mut r.rating);
 }
@@ -152,51 +154,108 @@ fn converted(s: &RubberStiffness, by_elements: bool) -> RubberStiffness {
     }
 }
 
-fn thermal_ui(ui: &mut Ui, cx: &mut EditCtx, key: &str, name: &str, thermal: &mut Option<Thermal>) {
-    let k = |sub: &str| format!("{key}.thermal.{sub}");
-    let mut on = thermal.is_some();
-    let r = ui
-        .checkbox(&mut on, "self-heating")
-        .on_hover_text("time domain: the rubber warms by its own power loss and cools to ambient");
+/// A number row of an optional table: label, field key, value, unit, typical step.
+type Row<'a> = (&'static str, &'static str, &'a mut f64, &'static str, f64);
+
+/// One optional table of a stage (`thermal`, `amplitude_saturation`) under `key`: a
+/// checkbox `label` that adds it at `start` or removes it, and a number row per field of
+/// `rows` while it is there.
+#[allow(clippy::too_many_arguments)]
+fn optional_ui<T>(
+    ui: &mut Ui,
+    cx: &mut EditCtx,
+    key: &str,
+    name: &str,
+    (label, hover): (&str, &str),
+    value: &mut Option<T>,
+    start: impl FnOnce() -> T,
+    rows: impl FnOnce(&mut T) -> Vec<Row<'_>>,
+) {
+    let mut on = value.is_some();
+    let r = ui.checkbox(&mut on, label).on_hover_text(hover);
     cx.track(&r);
-    if on != thermal.is_some() {
-        // A start: about 2 kg of rubber (1.7 kJ/(kg·K)) losing 10 W per kelvin, in 25 °C air.
-        *thermal = on.then_some(Thermal {
-            capacity_j_per_k: 3400.0,
-            conductance_w_per_k: 10.0,
-            ambient_c: 25.0,
-        });
+    if on != value.is_some() {
+        *value = on.then(start);
     }
-    ui.label("");
+    // An error of the whole table (`amplitude_saturation` beside `amplitude_poly`).
+    if cx.error_at(key).is_some() {
+        fields::message_at(ui, cx, key);
+    } else {
+        ui.label("");
+    }
     end_row(ui, cx);
-    let Some(t) = thermal else { return };
-    for (label, sub, value, unit, typical) in [
-        (
-            "   heat capacity",
-            "capacity_j_per_k",
-            &mut t.capacity_j_per_k,
-            "J/K",
-            1000.0,
-        ),
-        (
-            "   conductance",
-            "conductance_w_per_k",
-            &mut t.conductance_w_per_k,
-            "W/K",
-            1.0,
-        ),
-        ("   ambient", "ambient_c", &mut t.ambient_c, "°C", 10.0),
-    ] {
+    let Some(v) = value else { return };
+    for (label, sub, value, unit, typical) in rows(v) {
         ui.label(label);
-        widgets::number(
-            ui,
-            cx,
-            &k(sub),
-            &format!("{sub} {name}"),
-            value,
-            unit,
-            typical,
-        );
+        let k = format!("{key}.{sub}");
+        widgets::number(ui, cx, &k, &format!("{sub} {name}"), value, unit, typical);
         end_row(ui, cx);
     }
+}
+
+fn thermal_ui(ui: &mut Ui, cx: &mut EditCtx, key: &str, name: &str, thermal: &mut Option<Thermal>) {
+    let label = (
+        "self-heating",
+        "time domain: the rubber warms by its own power loss and cools to ambient",
+    );
+    // A start: about 2 kg of rubber (1.7 kJ/(kg·K)) losing 10 W per kelvin, in 25 °C air.
+    let start = || Thermal {
+        capacity_j_per_k: 3400.0,
+        conductance_w_per_k: 10.0,
+        ambient_c: 25.0,
+    };
+    let key = format!("{key}.thermal");
+    optional_ui(ui, cx, &key, name, label, thermal, start, |t| {
+        vec![
+            (
+                "   heat capacity",
+                "capacity_j_per_k",
+                &mut t.capacity_j_per_k,
+                "J/K",
+                1000.0,
+            ),
+            (
+                "   conductance",
+                "conductance_w_per_k",
+                &mut t.conductance_w_per_k,
+                "W/K",
+                1.0,
+            ),
+            ("   ambient", "ambient_c", &mut t.ambient_c, "°C", 10.0),
+        ]
+    });
+}
+
+/// `amplitude_saturation`: α_x = 1 + s·tanh((x/x_s)²), in place of `amplitude_poly`
+/// (the model check says so when both are given, or the stage has no elements).
+fn saturation_ui(
+    ui: &mut Ui,
+    cx: &mut EditCtx,
+    key: &str,
+    name: &str,
+    law: &mut Option<AmplitudeSaturation>,
+) {
+    let label = (
+        "saturating stiffening",
+        "α_x = 1 + s·tanh((x/x_s)²), x the element deformation in mm: a progressive \
+         coupling whose stiffening levels off once its elements bear on their housing",
+    );
+    // A start: 30 % stiffer once saturated, over 1 mm of element deformation.
+    let start = || AmplitudeSaturation {
+        stiffening: 0.3,
+        deformation_mm: 1.0,
+    };
+    let key = format!("{key}.amplitude_saturation");
+    optional_ui(ui, cx, &key, name, label, law, start, |s| {
+        vec![
+            ("   stiffening s", "stiffening", &mut s.stiffening, "", 0.1),
+            (
+                "   over deformation x_s",
+                "deformation_mm",
+                &mut s.deformation_mm,
+                "mm",
+                0.1,
+            ),
+        ]
+    });
 }
