@@ -124,10 +124,13 @@ pub fn rubber_ui(ui: &mut Ui, cx: &mut EditCtx, key: &str, name: &str, r: &mut R
         &mut r.temperature_stiffness_poly,
         &mut r.temperature_damping_poly,
     ];
-    for (info, poly) in POLYS.iter().zip(polys) {
+    for (i, (info, poly)) in POLYS.iter().zip(polys).enumerate() {
         rubber_polys::poly_ui(ui, cx, key, name, info, poly);
+        // The other amplitude law, beside the first.
+        if i == 0 {
+            saturation_ui(ui, cx, key, name, &mut r.amplitude_saturation);
+        }
     }
-    saturation_ui(ui, cx, key, name, &mut r.amplitude_saturation);
     thermal_ui(ui, cx, key, name, &mut r.thermal);
     crate::gui::views::editor::rating::rating_ui(ui, cx, key, name, &mut r.rating);
 }
