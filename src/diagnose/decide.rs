@@ -187,16 +187,41 @@ pub fn report(
     // So is an effect fitted to its own absence ([`super::param::Param::is_absent`]).
     // And a candidate whose gain something else it brings made
     // ([`Screened::unsupported`]).
-    let best_index = candidates.iter().position(|c| {
+    let eligible = |c: &Candidate_| {
         (!super::branch::is_branch(c.candidate) || clears_own_margin(c))
             && c.unsupported.is_none()
             && !c.candidate.param.is_absent(c.evaluated.value)
             && super::sensor_local::local(cx, c.candidate, plain, c.evaluated)
-    });
+    };
+    let n_held = guard::n_held(cx);
+    let best_index = candidates.iter().position(eligible);
+    let mut tie_loser: Option<(String, String)> = None;
+    // A held-out tie with the next candidate that could be named goes to the better fit
+    // of the fitted half ([`super::tie`]).
+    let nameable = |c: &Candidate_| {
+        eligible(c) && c.out.verified && c.out.rejected.is_none() && clears_own_margin(c)
+    };
+    if let Some(i) = best_index.filter(|&i| nameable(&candidates[i])) {
+        let fits = |c: &Candidate_| super::tie::Fits {
+            held: c.out.residual_after,
+            fitted: c.out.residual_fitted,
+        };
+        let runner = (i + 1..candidates.len()).find(|&j| nameable(&candidates[j]));
+        if let Some(j) = runner.filter(|&j| {
+            super::tie::runner_wins(fits(&candidates[i]), fits(&candidates[j]), n_held)
+        }) {
+            let (lost, won) = (fits(&candidates[i]), fits(&candidates[j]));
+            tie_loser = Some((
+                candidates[i].out.effect.clone(),
+                super::tie::reason(lost, won, n_held),
+            ));
+            let c = candidates.remove(j);
+            candidates.insert(i, c);
+        }
+    }
     let best = best_index
         .and_then(|i| candidates.get(i))
         .filter(|c| c.out.verified && c.out.rejected.is_none());
-    let n_held = guard::n_held(cx);
     let plain_after = cx.chi2(plain, true);
     let (verdict, after_model): (Verdict, &Evaluated) = if before <= NONE_CHI2 {
         (
@@ -319,7 +344,13 @@ pub fn report(
             let mut out = c.out.clone();
             if out.rejected.is_none() && out.effect != verdict.effect {
                 out.set_aside = super::aside::reason(cx, c.candidate, c.evaluated, &out, &against)
-                    .or_else(|| c.unsupported.map(str::to_string));
+                    .or_else(|| c.unsupported.map(str::to_string))
+                    .or_else(|| {
+                        tie_loser
+                            .as_ref()
+                            .filter(|(effect, _)| *effect == out.effect)
+                            .map(|(_, why)| why.clone())
+                    });
             }
             out
         })

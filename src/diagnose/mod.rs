@@ -105,6 +105,7 @@ mod tests_sensor_gain;
 #[cfg(test)]
 mod tests_verify;
 pub mod thermal_start;
+mod tie;
 pub mod trial;
 mod unsimulable;
 pub mod verify;
