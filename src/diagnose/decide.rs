@@ -201,23 +201,14 @@ pub fn report(
     let nameable = |c: &Candidate_| {
         eligible(c) && c.out.verified && c.out.rejected.is_none() && clears_own_margin(c)
     };
-    if let Some(i) = best_index.filter(|&i| nameable(&candidates[i])) {
-        let fits = |c: &Candidate_| super::tie::Fits {
-            held: c.out.residual_after,
-            fitted: c.out.residual_fitted,
-        };
-        let runner = (i + 1..candidates.len()).find(|&j| nameable(&candidates[j]));
-        if let Some(j) = runner.filter(|&j| {
-            super::tie::runner_wins(fits(&candidates[i]), fits(&candidates[j]), n_held)
-        }) {
-            let (lost, won) = (fits(&candidates[i]), fits(&candidates[j]));
-            tie_loser = Some((
-                candidates[i].out.effect.clone(),
-                super::tie::reason(lost, won, n_held),
-            ));
-            let c = candidates.remove(j);
-            candidates.insert(i, c);
-        }
+    let fits = |c: &Candidate_| super::tie::Fits {
+        held: c.out.residual_after,
+        fitted: c.out.residual_fitted,
+    };
+    if let Some(i) = best_index.filter(|&i| nameable(&candidates[i]))
+        && let Some((lost, why)) = super::tie::break_tie(&mut candidates, i, nameable, fits, n_held)
+    {
+        tie_loser = Some((lost.out.effect.clone(), why));
     }
     let best = best_index
         .and_then(|i| candidates.get(i))

@@ -35,6 +35,27 @@ pub fn runner_wins(best: Fits, runner: Fits, n_held: usize) -> bool {
         && runner.fitted < best.fitted
 }
 
+/// Breaks a held-out tie at `ranked[best]` (the verdict by held-out score): the next
+/// `nameable` item after it that [`runner_wins`] is moved to `best`. Returns the item
+/// that lost its place and why ([`reason`]), `None` when nothing moved.
+pub fn break_tie<T>(
+    ranked: &mut Vec<T>,
+    best: usize,
+    nameable: impl Fn(&T) -> bool,
+    fits: impl Fn(&T) -> Fits,
+    n_held: usize,
+) -> Option<(&T, String)> {
+    let lost = fits(ranked.get(best)?);
+    let runner = (best + 1..ranked.len()).find(|&j| nameable(&ranked[j]))?;
+    let won = fits(&ranked[runner]);
+    if !runner_wins(lost, won, n_held) {
+        return None;
+    }
+    let item = ranked.remove(runner);
+    ranked.insert(best, item);
+    Some((&ranked[best + 1], reason(lost, won, n_held)))
+}
+
 /// Why `lost` (the lower held-out χ²/N) is not the verdict when `won` is.
 pub fn reason(lost: Fits, won: Fits, n_held: usize) -> String {
     format!(
@@ -77,6 +98,16 @@ mod tests {
             fitted: 1.0,
         };
         assert!(!runner_wins(MODE, nan, 400));
+        // In a ranked list, the law moves before the mode; the item after them stays.
+        let mut ranked = vec![("mode", MODE), ("law", LAW), ("other", LAW)];
+        let (lost, _) =
+            break_tie(&mut ranked, 0, |_| true, |(_, f)| *f, 400).expect("the tie breaks");
+        assert_eq!(lost.0, "mode");
+        let names: Vec<_> = ranked.iter().map(|(n, _)| *n).collect();
+        assert_eq!(names, ["law", "mode", "other"]);
+        // A runner that cannot be named is passed over (here none is left).
+        let mut ranked = vec![("mode", MODE), ("law", LAW)];
+        assert!(break_tie(&mut ranked, 0, |(n, _)| *n != "law", |(_, f)| *f, 400).is_none());
         let why = reason(MODE, LAW, 400);
         assert!(why.contains("5.09 against 5.45, 7 % apart"), "{why}");
         assert!(why.contains("62.53 against 22.04"), "{why}");
