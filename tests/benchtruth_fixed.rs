@@ -17,8 +17,10 @@ use std::path::Path;
 /// one, 25.8: named only since the folds swap, `diagnose/holdout.rs`), 3114
 /// `parameter_error` (a control whose run-up lingers 2 s at a resonance: named
 /// `hysteretic_damping` until the run-up followed the measured speed,
-/// `transient/measured_speed.rs`).
-const SEEDS: [u64; 7] = [11, 5, 13, 20, 2087, 3008, 3114];
+/// `transient/measured_speed.rs`), 3071 `coupling_amplitude_nonlinearity` (a `tanh` law:
+/// named only since the saturating form is a candidate and a held-out tie goes to the
+/// better fit of the fitted half, `diagnose/tie.rs`; before, `unmodelled_mode`).
+const SEEDS: [u64; 8] = [11, 5, 13, 20, 2087, 3008, 3114, 3071];
 
 #[test]
 fn a_fixed_set_of_independent_cases_is_named_right() {
