@@ -195,7 +195,6 @@ pub fn report(
     };
     let n_held = guard::n_held(cx);
     let best_index = candidates.iter().position(eligible);
-    let mut tie_loser: Option<(String, String)> = None;
     // A held-out tie with the next candidate that could be named goes to the better fit
     // of the fitted half ([`super::tie`]).
     let nameable = |c: &Candidate_| {
@@ -205,11 +204,11 @@ pub fn report(
         held: c.out.residual_after,
         fitted: c.out.residual_fitted,
     };
-    if let Some(i) = best_index.filter(|&i| nameable(&candidates[i]))
-        && let Some((lost, why)) = super::tie::break_tie(&mut candidates, i, nameable, fits, n_held)
-    {
-        tie_loser = Some((lost.out.effect.clone(), why));
-    }
+    // The effect that lost a tie, and why.
+    let tie_loser: Option<(String, String)> = best_index
+        .filter(|&i| nameable(&candidates[i]))
+        .and_then(|i| super::tie::break_tie(&mut candidates, i, nameable, fits, n_held))
+        .map(|(lost, why)| (lost.out.effect.clone(), why));
     let best = best_index
         .and_then(|i| candidates.get(i))
         .filter(|c| c.out.verified && c.out.rejected.is_none());

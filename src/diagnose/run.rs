@@ -98,7 +98,6 @@ pub fn diagnose(
             if super::holdout::check_split(&cx.observed, &other).is_ok() {
                 cx.held_out = other;
                 cx.swapped_because = Some(why);
-                cx.prior_weight = 1.0;
                 step(0.25, "fitting the plain parameters to the other half")?;
                 fitted = reweighed_plain_fit(&mut cx, &baseline, &mut step)?;
             }
@@ -214,15 +213,16 @@ pub fn diagnose(
     Ok(report)
 }
 
-/// The plain fit of `cx` from `baseline`, redone with the prior reweighed by the
-/// campaign's model floor when its fitted χ²/N exceeds [`REWEIGH_FLOOR`]; `cx` keeps
-/// that weight, which every candidate is then fitted with
+/// The plain fit of `cx` from `baseline` with the prior at its unit weight, redone with
+/// the prior reweighed by the campaign's model floor when its fitted χ²/N exceeds
+/// [`REWEIGH_FLOOR`]; `cx` keeps that weight, which every candidate is then fitted with
 /// ([`super::context::Context::prior_weight`]).
 fn reweighed_plain_fit(
     cx: &mut Context,
     baseline: &Evaluated,
     step: &mut dyn FnMut(f64, &str) -> Result<(), DiagnoseError>,
 ) -> Result<Stepped, DiagnoseError> {
+    cx.prior_weight = 1.0;
     let mut fitted = cx.plain_fit(baseline, PLAIN_ROUNDS)?;
     let floor = cx.chi2(&fitted.best, false);
     if floor > REWEIGH_FLOOR {

@@ -114,25 +114,31 @@ pub(crate) fn amplitude(model: &mut Model, spec: &EffectSpec) -> Result<Applied,
                 .ok_or_else(|| p.bad("form", format!("`{key}`: expected whole or elastic")))?
         }
     };
-    let saturation = match p.optional_number("saturation_mm", 1e-9, 1e3)? {
-        None => None,
+    // One law, the saturating one or eq. 1's polynomial, and its words for the summary.
+    let (saturation, poly, law) = match p.optional_number("saturation_mm", 1e-9, 1e3)? {
         Some(deformation_mm) => {
             if spec.params.contains_key("a2") || spec.params.contains_key("a1") {
                 return Err(p.bad("saturation_mm", "give either a2/a1 or saturation_mm"));
             }
             let stiffening = p.number("stiffening", 0.3, 0.0, MAX_SATURATED_STIFFENING)?;
-            Some(AmplitudeSaturation {
+            let law = AmplitudeSaturation {
                 stiffening,
                 deformation_mm,
-            })
+            };
+            let words =
+                format!(" and saturates: α_x = 1 + {stiffening}·tanh((x/{deformation_mm})²)");
+            (Some(law), None, words)
         }
-    };
-    let (a2, a1) = match saturation {
-        Some(_) => (0.0, 0.0),
-        None => (
-            p.number("a2", SEED_AMPLITUDE_POLY[0], 0.0, A2_MAX_PER_MM2)?,
-            p.number("a1", SEED_AMPLITUDE_POLY[1], -A1_MAX_PER_MM, A1_MAX_PER_MM)?,
-        ),
+        None => {
+            let a2 = p.number("a2", SEED_AMPLITUDE_POLY[0], 0.0, A2_MAX_PER_MM2)?;
+            let a1 = p.number("a1", SEED_AMPLITUDE_POLY[1], -A1_MAX_PER_MM, A1_MAX_PER_MM)?;
+            let poly = Poly {
+                coeffs: [a2, a1, 1.0],
+                range: None,
+            };
+            let words = format!(": α_x = {a2}·x² + {a1}·x + 1 (seed 000 eq. 1 form)");
+            (None, Some(poly), words)
+        }
     };
     let direct = match &stage_mut(model, j)?.stiffness {
         RubberStiffness::Direct(k) => Some(*k),
@@ -156,32 +162,17 @@ pub(crate) fn amplitude(model: &mut Model, spec: &EffectSpec) -> Result<Applied,
     if stage.has_amplitude_law() {
         return Err(p.bad("connection", "the stage already has an amplitude law"));
     }
-    match saturation {
-        Some(law) => stage.amplitude_saturation = Some(law),
-        None => {
-            stage.amplitude_poly = Some(Poly {
-                coeffs: [a2, a1, 1.0],
-                range: None,
-            })
-        }
-    }
+    stage.amplitude_saturation = saturation;
+    stage.amplitude_poly = poly;
     stage.amplitude_form = form;
     let name = &model.connections[j].name;
     let what = match form {
         AmplitudeForm::Whole => "stiffness and damping",
         AmplitudeForm::Elastic => "elastic stiffness only, damping the user's",
     };
-    let summary = match saturation {
-        Some(s) => format!(
-            "rubber stage `{name}` stiffens with the element deformation x (mm) and \
-             saturates: α_x = 1 + {}·tanh((x/{})²) on its {what}",
-            s.stiffening, s.deformation_mm
-        ),
-        None => format!(
-            "rubber stage `{name}` stiffens with the element deformation x (mm): \
-             α_x = {a2}·x² + {a1}·x + 1 (seed 000 eq. 1 form) on its {what}"
-        ),
-    };
+    let summary = format!(
+        "rubber stage `{name}` stiffens with the element deformation x (mm){law} on its {what}"
+    );
     Ok((p.resolved, summary))
 }
 
