@@ -19,8 +19,11 @@ use std::path::Path;
 /// `hysteretic_damping` until the run-up followed the measured speed,
 /// `transient/measured_speed.rs`), 3071 `coupling_amplitude_nonlinearity` (a `tanh` law:
 /// named only since the saturating form is a candidate and a held-out tie goes to the
-/// better fit of the fitted half, `diagnose/tie.rs`; before, `unmodelled_mode`).
-const SEEDS: [u64; 8] = [11, 5, 13, 20, 2087, 3008, 3114, 3071];
+/// better fit of the fitted half, `diagnose/tie.rs`; before, `unmodelled_mode`), 3048
+/// `parameter_error` (a control whose damped gear mesh the user's model, written in the
+/// spec's keys, leaves undamped: named `unmodelled_mode` at the mesh mode until the
+/// diagnosis damped an undamped mesh as the recordings say, `diagnose/mesh_damping.rs`).
+const SEEDS: [u64; 9] = [11, 5, 13, 20, 2087, 3008, 3114, 3071, 3048];
 
 #[test]
 fn a_fixed_set_of_independent_cases_is_named_right() {

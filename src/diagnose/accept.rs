@@ -6,6 +6,9 @@
 //! | `parameter_error` | the named plain parameter times the verdict's `factor` |
 //! | an effect | every plain parameter times its fitted `scale.<name>` of the verdict's candidate row, then the effect at its fitted value, built by [`Candidate::apply`] (the code the fit used) |
 //! | `sensor_artifact` | the user's model unchanged: the artifact is in the measurement (a tape joint, an encoder's pitch error), not in the driveline, so there is nothing to add to the model |
+//!
+//! Every verdict but `none` also puts in the mesh dampings the diagnosis added to gears the
+//! model left undamped (`mesh_damping.<gear>`, [`super::mesh_damping`]).
 
 use super::candidates::Candidate;
 use super::report::{ParameterValue, Report, Verdict};
@@ -26,10 +29,14 @@ use crate::model::Model;
 pub fn accepted_model(model: &Model, report: &Report) -> Result<Model, String> {
     let verdict = &report.verdict;
     let effect = Effect::parse(&verdict.effect).map_err(|e| e.to_string())?;
+    // Mesh dampings the diagnosis added ([`super::mesh_damping`]) were in the model every
+    // fit started from, whatever it named.
+    let damped = super::mesh_damping::apply(model, &verdict.parameters)?;
     match effect {
-        Effect::None | Effect::SensorArtifact => Ok(model.clone()),
-        Effect::ParameterError => parameter_error(model, verdict),
-        _ => with_effect(model, report, effect),
+        Effect::None => Ok(model.clone()),
+        Effect::SensorArtifact => Ok(damped),
+        Effect::ParameterError => parameter_error(&damped, verdict),
+        _ => with_effect(&damped, report, effect),
     }
 }
 

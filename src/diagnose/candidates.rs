@@ -133,6 +133,17 @@ impl Candidate {
             };
             return Ok((model.clone(), Some(joint)));
         }
+        // A backlash candidate that damps its mesh was made for a mesh the user left
+        // undamped; a damping there now is the diagnosis' own ([`super::mesh_damping`]),
+        // which the candidate's replaces.
+        let undamped;
+        let model = match self.fixed_value("connection") {
+            Some(gear) if super::candidates_backlash::mesh_damping_ratio(self).is_some() => {
+                undamped = super::mesh_damping::without(model, gear);
+                &undamped
+            }
+            _ => model,
+        };
         let mut spec = EffectSpec::new(self.effect);
         for (k, v) in &self.fixed {
             spec = spec.with(k, v);

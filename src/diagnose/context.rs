@@ -73,6 +73,9 @@ pub struct Context<'a> {
     pub set_aside: Vec<super::unsimulable::SetAside>,
     /// Why `held_out` is the other fold, when it is ([`super::holdout::swap_reason`]).
     pub swapped_because: Option<String>,
+    /// Mesh dampings added to the user's model, which `user` then carries
+    /// ([`super::mesh_damping`]).
+    pub mesh_damping: Option<super::mesh_damping::Added>,
 }
 
 impl<'a> Context<'a> {
@@ -89,6 +92,7 @@ impl<'a> Context<'a> {
             prior_weight: 1.0,
             set_aside: Vec::new(),
             swapped_because: None,
+            mesh_damping: None,
         }
     }
 }

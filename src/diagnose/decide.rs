@@ -74,12 +74,13 @@ pub fn report(
     let before = cx.chi2(baseline, true);
     let plain_score = score(cx, plain, k_plain);
     let mut candidates: Vec<Candidate_> = Vec::new();
-    let plain_params: BTreeMap<String, ParameterValue> = cx
+    let mut plain_params: BTreeMap<String, ParameterValue> = cx
         .plain
         .iter()
         .zip(&plain.factors)
         .map(|(p, f)| (format!("scale.{}", p.name), number(*f)))
         .collect();
+    plain_params.extend(super::mesh_damping::keys(cx.mesh_damping.as_ref()));
     for s in screened {
         let (c, e) = (&s.candidate, &s.evaluated);
         let mut parameters = plain_params.clone();
@@ -323,6 +324,7 @@ pub fn report(
             plain,
         )
     };
+    let verdict = super::mesh_damping::marked(verdict, cx.mesh_damping.as_ref());
     let against = super::aside::Against {
         plain,
         plain_score,

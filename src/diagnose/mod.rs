@@ -54,6 +54,7 @@ pub mod guard;
 pub mod holdout;
 pub mod html;
 pub mod labels;
+pub mod mesh_damping;
 pub mod multistart;
 pub mod observe;
 pub mod observe_runup;

@@ -73,6 +73,9 @@ pub fn diagnose(
     step(0.1, "simulating the model")?;
     // The user's model as given, on every recording it can simulate; one it cannot is
     // set aside with its reason ([`super::unsimulable`]).
+    // The user's model with its undamped meshes damped, when the recordings say so
+    // ([`super::mesh_damping`]); declared before the context, which then borrows it.
+    let damped_user: Model;
     let (mut cx, baseline) = context_and_baseline(model, options, observed)?;
     // A held-out half the user's model already fits cannot judge anything: the other
     // fold is held out instead ([`super::holdout::swap_reason`]), if it leaves both
@@ -103,6 +106,27 @@ pub fn diagnose(
             }
         }
     }
+    // Fits start "from the user's values" at `origin`: the user's model, or that model
+    // with its meshes damped; `baseline` stays the model as given (the report's before).
+    let mut origin = baseline.clone();
+    if cx.chi2(&baseline, true) > decide::NONE_CHI2 {
+        let gears = super::mesh_damping::undamped(model);
+        let chosen = super::mesh_damping::choose(&cx, &gears, &fitted.best)?;
+        if let Some(chosen) = chosen {
+            step(
+                0.28,
+                "refitting the plain parameters with the meshes damped",
+            )?;
+            damped_user = chosen.model;
+            cx.user = &damped_user;
+            cx.mesh_damping = Some(chosen.added);
+            origin = chosen.at_user;
+            let mut refit = cx.rounds(chosen.at_plain, None, PLAIN_ROUNDS, None);
+            refit.rejected.extend(chosen.rejected);
+            refit.rejected.extend(fitted.rejected);
+            fitted = refit;
+        }
+    }
     let cx = cx;
     let mut plain_rejected = fitted.rejected;
     let plain_fit = fitted.best;
@@ -117,7 +141,7 @@ pub fn diagnose(
     let results = parallel::map_reporting(
         list.len(),
         options.threads,
-        &|k| screen_one(&cx, &plain_fit, &baseline, &list[k]),
+        &|k| screen_one(&cx, &plain_fit, &origin, &list[k]),
         &mut |k, finished| {
             step(
                 0.3 + 0.2 * finished as f64 / list.len() as f64,
@@ -144,14 +168,14 @@ pub fn diagnose(
         step(0.5, "refitting the plain parameters with a sensor artifact")?;
         sensor_refine::refine_best_artifact(
             &cx,
-            &baseline,
+            &origin,
             &mut screened,
             decide::fitted_score(&cx, &plain_fit, k_plain),
             &|e| decide::fitted_score(&cx, e, k_plain + 1),
         )?;
         second_starts(
             &cx,
-            &baseline,
+            &origin,
             &mut screened,
             &|e| decide::fitted_score(&cx, e, k_plain),
             &|e| decide::fitted_score(&cx, e, k_plain + 1),
@@ -198,7 +222,7 @@ pub fn diagnose(
     plain_rejected.extend(refined.rejected);
     let plain_fit = refined.best;
     step(0.97, "deciding")?;
-    let single = cx.single_parameter(&baseline);
+    let single = cx.single_parameter(&origin);
     let report = decide::report(
         &cx,
         &baseline,
