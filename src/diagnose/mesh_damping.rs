@@ -27,12 +27,11 @@ use super::report::{ParameterValue, Verdict};
 use super::surrogate::scaled;
 use super::trial;
 use crate::effects::backlash::{DEFAULT_MESH_DAMPING_RATIO, mesh_mode_inertia_kg_m2};
-use crate::model::{ConnectionKind, Model};
+use crate::model::{ConnectionKind, Gear, Model};
 use std::collections::BTreeMap;
 
 /// The mesh damping ratios tried first: a log grid a factor √10 apart around the backlash
-/// candidates' default, from 1 % to 32 % of critical; the best interior one is refined at
-/// the vertex of the parabola through it and its neighbours (in ln ζ).
+/// candidates' default, from 1 % to 32 % of critical ([`choose`] refines the best).
 pub const RATIOS: [f64; 4] = [
     0.1 * DEFAULT_MESH_DAMPING_RATIO,
     0.316_227_766_016_837_94 * DEFAULT_MESH_DAMPING_RATIO,
@@ -62,23 +61,32 @@ pub fn undamped(model: &Model) -> Vec<String> {
         .collect()
 }
 
+/// Gear `name` of `model` when it has a mesh stiffness.
+fn elastic_gear<'m>(model: &'m mut Model, name: &str) -> Option<&'m mut Gear> {
+    model
+        .connections
+        .iter_mut()
+        .find_map(|c| match &mut c.kind {
+            ConnectionKind::Gear(g) if c.name == name && g.mesh_stiffness_nm_per_rad.is_some() => {
+                Some(g)
+            }
+            _ => None,
+        })
+}
+
 /// `model` with each of `gears` damped at ratio `zeta` of its mesh mode; the dampings
 /// given, N·m·s/rad, by gear.
 pub fn damped(model: &Model, gears: &[String], zeta: f64) -> (Model, Vec<(String, f64)>) {
     let mut m = model.clone();
     let mut added = Vec::new();
     for name in gears {
-        let Some(j) = mesh_mode_inertia_kg_m2(model, name) else {
-            continue;
-        };
-        for c in m.connections.iter_mut().filter(|c| &c.name == name) {
-            if let ConnectionKind::Gear(g) = &mut c.kind
-                && let Some(k) = g.mesh_stiffness_nm_per_rad
-            {
-                let damping = 2.0 * zeta * (k * j).sqrt();
-                g.mesh_damping_nm_s_per_rad = damping;
-                added.push((name.clone(), damping));
-            }
+        let j = mesh_mode_inertia_kg_m2(model, name);
+        if let (Some(j), Some(g)) = (j, elastic_gear(&mut m, name))
+            && let Some(k) = g.mesh_stiffness_nm_per_rad
+        {
+            let damping = 2.0 * zeta * (k * j).sqrt();
+            g.mesh_damping_nm_s_per_rad = damping;
+            added.push((name.clone(), damping));
         }
     }
     (m, added)
@@ -93,13 +101,12 @@ pub struct Added {
     pub dampings: Vec<(String, f64)>,
 }
 
-/// `model` with gear `name`'s mesh damping taken out (unchanged without that gear).
+/// `model` with gear `name`'s mesh damping taken out (unchanged without that elastic
+/// gear; a rigid gear has no mesh damping).
 pub fn without(model: &Model, name: &str) -> Model {
     let mut m = model.clone();
-    for c in m.connections.iter_mut().filter(|c| c.name == name) {
-        if let ConnectionKind::Gear(g) = &mut c.kind {
-            g.mesh_damping_nm_s_per_rad = 0.0;
-        }
+    if let Some(g) = elastic_gear(&mut m, name) {
+        g.mesh_damping_nm_s_per_rad = 0.0;
     }
     m
 }
@@ -120,9 +127,10 @@ pub struct Chosen {
     pub rejected: Vec<String>,
 }
 
-/// Tries [`RATIOS`] on `cx.user`'s undamped meshes at the plain fit `plain`'s factors,
-/// then the parabola's vertex about the best interior one. `None` when it has none, or no
-/// ratio lowers the fitted χ² by [`MIN_GAIN`]. A ratio that cannot be simulated is a
+/// Tries [`RATIOS`] on `gears` of `cx.user` at the plain fit `plain`'s factors, then,
+/// where the grid gains half of [`MIN_GAIN`], [`HALVINGS`] bracket halvings about the best
+/// in ln ζ with the parabola's vertex through the last three. `None` when there are no
+/// gears, or no ratio lowers the fitted χ² by [`MIN_GAIN`]. A ratio that cannot be simulated is a
 /// rejected step; only cancelling is an error.
 pub fn choose(
     cx: &Context,
@@ -154,36 +162,36 @@ pub fn choose(
             cost,
         })
     };
+    // Each ratio of a batch side by side; one that cannot be simulated is a rejected
+    // step, left out.
     let mut rejected = Vec::new();
-    let mut keep = |zeta: f64, t: Result<Tried, DiagnoseError>| match t {
-        Ok(t) => Ok(Some(t)),
-        Err(e) if trial::is_fatal(&e) => Err(e),
-        Err(e) => {
-            rejected.push(trial::reason(&format!("mesh damping ratio {zeta:.4}"), &e));
-            Ok(None)
+    let mut try_all = |zetas: &[f64]| -> Result<Vec<Option<Tried>>, DiagnoseError> {
+        let runs = parallel_map(zetas.len(), cx.options.threads, &|k| Some(run(zetas[k])));
+        let mut out = Vec::with_capacity(zetas.len());
+        for (zeta, t) in zetas.iter().zip(runs) {
+            out.push(match t {
+                Some(Ok(t)) => Some(t),
+                Some(Err(e)) if trial::is_fatal(&e) => return Err(e),
+                Some(Err(e)) => {
+                    rejected.push(trial::reason(&format!("mesh damping ratio {zeta:.4}"), &e));
+                    None
+                }
+                None => None,
+            });
         }
+        Ok(out)
     };
-    let ratios = RATIOS;
-    let runs = parallel_map(ratios.len(), cx.options.threads, &|k| Some(run(ratios[k])));
-    let mut grid = Vec::with_capacity(ratios.len());
-    for (k, t) in runs.into_iter().enumerate() {
-        grid.push(match t {
-            Some(t) => keep(ratios[k], t)?,
-            None => None,
-        });
-    }
     let cost = |t: &Option<Tried>| t.as_ref().map_or(f64::INFINITY, |t| t.cost);
+    let mut grid = try_all(&RATIOS)?;
     let Some(k) = (0..grid.len()).min_by(|a, b| cost(&grid[*a]).total_cmp(&cost(&grid[*b]))) else {
         return Ok(None);
     };
-    // Bracket halvings about the best (in ln ζ), each trying both sides at once, then
-    // the parabola's vertex through the last three.
-    let to_beat = (1.0 - MIN_GAIN) * cx.fit_cost(&plain.simulated);
+    let plain_cost = cx.fit_cost(&plain.simulated);
     let mut best = grid.swap_remove(k);
     let mut step = 0.5 * STEP.ln();
     // Refined only where the grid already gains half of MIN_GAIN: the grid's factor √10
     // moves the cost by more than its halvings can.
-    let halvings = if cost(&best) < (1.0 - 0.5 * MIN_GAIN) * cx.fit_cost(&plain.simulated) {
+    let halvings = if cost(&best) < (1.0 - 0.5 * MIN_GAIN) * plain_cost {
         HALVINGS
     } else {
         0
@@ -192,41 +200,29 @@ pub fn choose(
         let Some(mid) = best.as_ref().map(|t| t.zeta) else {
             break;
         };
-        let sides = [mid * (-step).exp(), mid * step.exp()];
-        let runs = parallel_map(2, cx.options.threads, &|i| Some(run(sides[i])));
-        let mut around = Vec::with_capacity(2);
-        for (i, t) in runs.into_iter().enumerate() {
-            around.push(match t {
-                Some(t) => keep(sides[i], t)?,
-                None => None,
-            });
-        }
+        let around = try_all(&[mid * (-step).exp(), mid * step.exp()])?;
         let (lower, middle, upper) = (cost(&around[0]), cost(&best), cost(&around[1]));
         let vertex = parabola_vertex_offset(lower, middle, upper, step)
             .filter(|d| d.abs() < step)
             .map(|d| mid * d.exp());
-        for t in around.into_iter().flatten() {
+        // The vertex is tried from the second halving on, once the three are close.
+        let at_vertex = match vertex.filter(|_| step < 0.5 * STEP.ln()) {
+            Some(zeta) => try_all(&[zeta])?,
+            None => Vec::new(),
+        };
+        for t in around.into_iter().chain(at_vertex).flatten() {
             if t.cost < cost(&best) {
                 best = Some(t);
             }
         }
-        if let Some(zeta) = vertex.filter(|_| step < 0.5 * STEP.ln())
-            && let Some(t) = keep(zeta, run(zeta))?
-            && t.cost < cost(&best)
-        {
-            best = Some(t);
-        }
         step *= 0.5;
     }
-    let Some(best) = best.filter(|t| t.cost < to_beat) else {
+    let Some(best) = best.filter(|t| t.cost < (1.0 - MIN_GAIN) * plain_cost) else {
         return Ok(None);
     };
     // The chosen damping on every recording, at the plain factors and at the user's.
     let ones = vec![1.0; cx.plain.len()];
-    let both = [
-        (best.at.clone(), plain.factors.clone()),
-        (best.model.clone(), ones),
-    ];
+    let both = [(best.at, plain.factors.clone()), (best.model.clone(), ones)];
     let full = parallel_map(2, cx.options.threads, &|i| {
         Some(trial::evaluate(
             cx,
@@ -319,13 +315,7 @@ pub fn apply(
         if !(c.is_finite() && *c >= 0.0) {
             return Err(format!("`{key}` = {c} is no damping"));
         }
-        let gear = m.connections.iter_mut().find_map(|x| match &mut x.kind {
-            ConnectionKind::Gear(g) if x.name == name && g.mesh_stiffness_nm_per_rad.is_some() => {
-                Some(g)
-            }
-            _ => None,
-        });
-        let Some(g) = gear else {
+        let Some(g) = elastic_gear(&mut m, name) else {
             return Err(format!(
                 "the model has no elastic gear `{name}` (edited since the diagnosis?)"
             ));

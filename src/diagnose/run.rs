@@ -71,11 +71,11 @@ pub fn diagnose(
     step(0.0, "analysing the recordings")?;
     let observed = observe(recordings, options.max_order)?;
     step(0.1, "simulating the model")?;
-    // The user's model as given, on every recording it can simulate; one it cannot is
-    // set aside with its reason ([`super::unsimulable`]).
     // The user's model with its undamped meshes damped, when the recordings say so
     // ([`super::mesh_damping`]); declared before the context, which then borrows it.
     let damped_user: Model;
+    // The user's model as given, on every recording it can simulate; one it cannot is
+    // set aside with its reason ([`super::unsimulable`]).
     let (mut cx, baseline) = context_and_baseline(model, options, observed)?;
     // A held-out half the user's model already fits cannot judge anything: the other
     // fold is held out instead ([`super::holdout::swap_reason`]), if it leaves both
@@ -109,7 +109,9 @@ pub fn diagnose(
     // Fits start "from the user's values" at `origin`: the user's model, or that model
     // with its meshes damped; `baseline` stays the model as given (the report's before).
     let mut origin = baseline.clone();
-    if cx.chi2(&baseline, true) > decide::NONE_CHI2 {
+    // The held-out folds are final from here.
+    let before = cx.chi2(&baseline, true);
+    if before > decide::NONE_CHI2 {
         let gears = super::mesh_damping::undamped(model);
         let chosen = super::mesh_damping::choose(&cx, &gears, &fitted.best)?;
         if let Some(chosen) = chosen {
@@ -160,7 +162,6 @@ pub fn diagnose(
         }
     }
     let k_plain = cx.plain.len();
-    let before = cx.chi2(&baseline, true);
     // Plain recalibrations found on the way ([`super::own_gain`]).
     let mut recalibrations: Vec<Evaluated> = Vec::new();
     // When the user's model already fits, no candidate needs the time domain.
