@@ -273,3 +273,73 @@ backlash_softening_deg = 0.05
     }
     assert_eq!(referred(&hard), k * 0.25);
 }
+
+/// The same gear with a Hertzian contact (`contact_exponent = 1.5`, as stiff as the mesh
+/// at `contact_reference_deg` = 0.3°): the plant's mesh torque is k·s·√(|s|/s_ref), s the
+/// softened dead zone written out apart, at every twist; the keys survive a write and a
+/// read; and the unloaded mesh keeps 1 % of its stiffness in the linear views.
+#[test]
+fn a_hertzian_gear_contact_passes_the_power_law_torque() {
+    let text = r#"format = 1
+name = "hertzian contact"
+[[inertia]]
+name = "pinion"
+inertia = 0.01
+[[inertia]]
+name = "wheel"
+inertia = 0.2
+[[connection]]
+kind = "gear"
+name = "mesh"
+from = "pinion"
+to = "wheel"
+ratio = 0.5
+mesh_stiffness = 4.0e5
+backlash_deg = 0.4
+backlash_softening_deg = 0.05
+contact_exponent = 1.5
+contact_reference_deg = 0.3
+"#;
+    let model = parse_model(text, "hertz.toml").unwrap();
+    let again = parse_model(&torsim::model::to_toml_string(&model), "again.toml").unwrap();
+    assert_eq!(again, model, "the keys survive a write and a read");
+    let plant = torsim::transient::plant::Plant::new(&model, 1.0, None).unwrap();
+    let e = &plant.elements[0];
+    let (k, h, eps, s_ref) = (
+        4.0e5,
+        0.2f64.to_radians(),
+        0.05f64.to_radians(),
+        0.3f64.to_radians(),
+    );
+    let law = |d: f64| {
+        let (a, b) = (d - h, d + h);
+        let s = 0.5 * (a + (a * a + eps * eps).sqrt()) + 0.5 * (b - (b * b + eps * eps).sqrt());
+        s * (s.abs() / s_ref).sqrt()
+    };
+    let n = 2 * plant.n_dof;
+    for twist_over_h in [-3.0, -1.0, -0.5, 0.0, 0.2, 0.9, 1.0, 1.1, 2.0, 5.0] {
+        let mut y = vec![0.0; n];
+        let d = twist_over_h * h;
+        y[e.from_dof.unwrap()] = d / e.ratio;
+        let t = plant.element_state(e, &y, None).torque_ref_nm;
+        let expected = k * law(d) * e.ratio;
+        assert!(
+            (t - expected).abs() <= 1e-12 * (k * h).max(expected.abs()),
+            "δ/h = {twist_over_h}: {t} N·m against {expected}"
+        );
+    }
+    // At δ = h + s_ref (hard edge far behind) the secant is k: the law meets the mesh's
+    // line at its reference deflection, to the softening's ε²/4s_ref.
+    let d = h + s_ref;
+    assert!((law(d) - s_ref).abs() < eps * eps / s_ref, "{}", law(d));
+    // No mean torque passes: the linear views take the floor of 1 % of the mesh
+    // stiffness (the law's own tangent at δ = 0 is 0: √(|s|/s_ref) → 0), referred × 0.5².
+    // The loaded working point is checked against its inversion in `tooth_contact.rs`.
+    let point = torsim::physics::OperatingPoint {
+        load: 1.0,
+        temperature_c: None,
+    };
+    let system = torsim::physics::System::new(&model, point).unwrap();
+    let k_ref = system.elements[0].stiffness_at(0.0).0;
+    assert!((k_ref - k * 0.25 * 0.01).abs() < 1e-9 * k, "{k_ref}");
+}

@@ -55,6 +55,7 @@ pub mod holdout;
 pub mod html;
 pub mod labels;
 pub mod mesh_damping;
+pub mod mesh_damping_search;
 pub mod multistart;
 pub mod observe;
 pub mod observe_runup;

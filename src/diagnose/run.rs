@@ -113,7 +113,7 @@ pub fn diagnose(
     let before = cx.chi2(&baseline, true);
     if before > decide::NONE_CHI2 {
         let gears = super::mesh_damping::undamped(model);
-        let chosen = super::mesh_damping::choose(&cx, &gears, &fitted.best)?;
+        let chosen = super::mesh_damping_search::choose(&cx, &gears, &fitted.best)?;
         if let Some(chosen) = chosen {
             step(
                 0.28,

@@ -38,6 +38,8 @@ pub(crate) fn backlash(model: &mut Model, spec: &EffectSpec) -> Result<Applied, 
             "backlash_deg",
             "softening",
             "mesh_damping_ratio",
+            "contact_exponent",
+            "contact_reference_deg",
         ],
     )?;
     let first = model
@@ -53,6 +55,17 @@ pub(crate) fn backlash(model: &mut Model, spec: &EffectSpec) -> Result<Applied, 
     let deg = p.number("backlash_deg", 0.2, 0.0, 10.0)?;
     let softening = p.optional_number("softening", 0.0, 10.0)?.unwrap_or(0.0);
     let ratio = p.optional_number("mesh_damping_ratio", 0.0, 2.0)?;
+    let exponent = p.number("contact_exponent", 1.0, 1.0, 3.0)?;
+    // Without play the effect is absent: the contact stays linear too.
+    let reference_deg = if exponent == 1.0 || deg == 0.0 {
+        None
+    } else {
+        // The mesh stiffness is quoted at the working load, and a contact that works
+        // inside the play is referred to the play itself.
+        let working = working_deflection_deg(model, &name).unwrap_or(0.0);
+        let default = working.max(0.5 * deg).max(1e-6);
+        Some(p.number("contact_reference_deg", default, 1e-9, 10.0)?)
+    };
     let inertia = mesh_mode_inertia_kg_m2(model, &name);
     let Some(c) = model.connections.iter_mut().find(|c| c.name == name) else {
         return Err(p.bad("connection", format!("no connection `{name}`")));
@@ -71,11 +84,19 @@ pub(crate) fn backlash(model: &mut Model, spec: &EffectSpec) -> Result<Applied, 
     }
     g.backlash_deg = deg;
     g.backlash_softening_deg = 0.5 * softening * deg;
-    let contact = if softening > 0.0 {
+    let mut contact = if softening > 0.0 {
         format!(", its contact softened over {softening} of the half play")
     } else {
         String::new()
     };
+    if let Some(r) = reference_deg {
+        g.contact_exponent = exponent;
+        g.contact_reference_deg = r;
+        contact += &format!(
+            ", its contact law a power {exponent} as stiff as the mesh at {r:.4e}° of \
+             deflection"
+        );
+    }
     let damped = match (ratio, inertia) {
         (Some(z), Some(j)) if z > 0.0 && g.mesh_damping_nm_s_per_rad == 0.0 => {
             let c = 2.0 * z * (k * j).sqrt();
@@ -87,6 +108,20 @@ pub(crate) fn backlash(model: &mut Model, spec: &EffectSpec) -> Result<Applied, 
     let summary =
         format!("gear `{name}` has {deg}° of free play at its output side{contact}{damped}");
     Ok((p.resolved, summary))
+}
+
+/// The deflection of gear `name`'s mesh under its mean torque at full load, degrees at its
+/// `to` side (the torque over the mesh stiffness); `None` when the model has no static
+/// state there or `name` is no elastic gear.
+pub fn working_deflection_deg(model: &Model, name: &str) -> Option<f64> {
+    let j = model.connections.iter().position(|c| c.name == name)?;
+    let system =
+        crate::physics::System::nominal(model, crate::physics::OperatingPoint::default()).ok()?;
+    let e = system.elements.iter().find(|e| e.connection == j)?;
+    let torque = system.mean_torque_nm.get(j).copied().flatten()?;
+    let (k_ref, _) = e.stiffness_at(0.0);
+    let own = k_ref / (e.torque_ratio * e.torque_ratio);
+    Some((torque / own).abs().to_degrees())
 }
 
 /// The inertia of gear `name`'s own mode, kg·m² at its `to` side: its two nodes in series,
@@ -174,5 +209,48 @@ mod tests {
         let damped = plain.with("mesh_damping_ratio", 0.1);
         let truth = build_truth(&user, &damped, 0.0, 0).expect("applies");
         assert_eq!(gear(&truth.model).mesh_damping_nm_s_per_rad, 3.0);
+    }
+
+    /// A Hertzian contact: as stiff as the mesh at the full-load deflection T/k (here
+    /// below the half play, which it takes instead), or at the reference given; its
+    /// absence (no play) leaves the contact linear too; an exponent outside 1–3 is refused.
+    #[test]
+    fn a_hertzian_contact_is_referred_to_the_working_load_or_the_play() {
+        let user = bench();
+        let working = working_deflection_deg(&user, "gearbox").expect("a static state");
+        // T/k by hand: the bench's mean torque at full load over the mesh stiffness.
+        let system = crate::physics::System::nominal(&user, Default::default()).expect("valid");
+        let j = user
+            .connections
+            .iter()
+            .position(|c| c.name == "gearbox")
+            .expect("a gear");
+        let torque = system.mean_torque_nm[j].expect("a mean torque");
+        let k = gear(&user).mesh_stiffness_nm_per_rad.expect("elastic");
+        let e = system
+            .elements
+            .iter()
+            .find(|e| e.connection == j)
+            .expect("an element");
+        let own = e.stiffness_at(0.0).0 / (e.torque_ratio * e.torque_ratio);
+        assert!(
+            (own - k).abs() < 1e-9 * k,
+            "the element's own stiffness is the mesh's"
+        );
+        assert!((working - (torque / k).abs().to_degrees()).abs() < 1e-15);
+        let hertz = EffectSpec::new(Effect::GearBacklash)
+            .with("backlash_deg", 0.2)
+            .with("contact_exponent", 1.5);
+        let g = gear(&build_truth(&user, &hertz, 0.0, 0).expect("applies").model).clone();
+        assert_eq!(g.contact_exponent, 1.5);
+        assert_eq!(g.contact_reference_deg, working.max(0.1));
+        let given = hertz.clone().with("contact_reference_deg", 0.05);
+        let g = gear(&build_truth(&user, &given, 0.0, 0).expect("applies").model).clone();
+        assert_eq!(g.contact_reference_deg, 0.05);
+        let absent = hertz.clone().with("backlash_deg", 0.0);
+        let g = gear(&build_truth(&user, &absent, 0.0, 0).expect("applies").model).clone();
+        assert_eq!((g.contact_exponent, g.contact_reference_deg), (1.0, 0.0));
+        let steep = hertz.with("contact_exponent", 3.5);
+        assert!(build_truth(&user, &steep, 0.0, 0).is_err());
     }
 }

@@ -204,6 +204,8 @@ fn connection(t: &Tab) -> Result<Connection, ModelError> {
                 "mesh_damping",
                 "backlash_deg",
                 "backlash_softening_deg",
+                "contact_exponent",
+                "contact_reference_deg",
             ],
             gear,
         ),
@@ -354,5 +356,7 @@ fn gear(t: &Tab) -> Result<ConnectionKind, ModelError> {
         mesh_damping_nm_s_per_rad: t.f64_or("mesh_damping", 0.0)?,
         backlash_deg: t.f64_or("backlash_deg", 0.0)?,
         backlash_softening_deg: t.f64_or("backlash_softening_deg", 0.0)?,
+        contact_exponent: t.f64_or("contact_exponent", 1.0)?,
+        contact_reference_deg: t.f64_or("contact_reference_deg", 0.0)?,
     }))
 }

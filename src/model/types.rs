@@ -234,6 +234,13 @@ pub struct Gear {
     /// the play closes, as Hertzian contact and profile errors make it. Ignored without
     /// backlash.
     pub backlash_softening_deg: f64,
+    /// Exponent n of the tooth contact's law once the flanks touch (default 1: linear;
+    /// 1.5: Hertzian), [`crate::physics::tooth_contact`]. torsim's extension.
+    pub contact_exponent: f64,
+    /// Deflection at the `to` side, degrees, at which a power-law contact's secant
+    /// stiffness is `mesh_stiffness` (the deflection at the load the stiffness was quoted
+    /// for). Needed when `contact_exponent` ≠ 1 (default 0: none).
+    pub contact_reference_deg: f64,
 }
 
 impl Model {

@@ -211,6 +211,32 @@ fn connections(model: &Model) -> Check {
                 }
                 non_negative(&k("backlash_deg"), g.backlash_deg)?;
                 non_negative(&k("backlash_softening_deg"), g.backlash_softening_deg)?;
+                if !(1.0..=3.0).contains(&g.contact_exponent) {
+                    fail(
+                        k("contact_exponent"),
+                        format!(
+                            "is {}: a tooth contact's law has an exponent from 1 (linear) to 3 \
+                             (1.5 is Hertz's)",
+                            g.contact_exponent
+                        ),
+                    )?;
+                }
+                non_negative(&k("contact_reference_deg"), g.contact_reference_deg)?;
+                if g.contact_exponent != 1.0 {
+                    if g.mesh_stiffness_nm_per_rad.is_none() {
+                        fail(
+                            k("contact_exponent"),
+                            "needs `mesh_stiffness`: a rigid gear has no tooth contact law",
+                        )?;
+                    }
+                    if g.contact_reference_deg <= 0.0 {
+                        fail(
+                            k("contact_reference_deg"),
+                            "must be > 0 with a `contact_exponent` other than 1: the \
+                             deflection at which the contact is as stiff as `mesh_stiffness`",
+                        )?;
+                    }
+                }
             }
         }
     }

@@ -150,6 +150,8 @@ fn connection(out: &mut String, c: &Connection) {
             opt_kv(out, "mesh_damping", g.mesh_damping_nm_s_per_rad, 0.0);
             opt_kv(out, "backlash_deg", g.backlash_deg, 0.0);
             opt_kv(out, "backlash_softening_deg", g.backlash_softening_deg, 0.0);
+            opt_kv(out, "contact_exponent", g.contact_exponent, 1.0);
+            opt_kv(out, "contact_reference_deg", g.contact_reference_deg, 0.0);
         }
     }
 }

@@ -17,6 +17,7 @@ pub mod modal_damping;
 mod one_law;
 pub mod static_twist;
 pub mod system;
+pub mod tooth_contact;
 mod topology;
 
 pub use distributed::DistributedShaft;

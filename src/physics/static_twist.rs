@@ -136,16 +136,19 @@ pub(super) fn static_state(
                 e.law = law;
                 system.static_twist_rad[e.connection] = Some(twist);
             }
-            ConnectionKind::Gear(g) if g.backlash_deg > 0.0 => {
-                // A softened contact works at the twist its mean torque needs, with
-                // its tangent there (`dead_zone`); a hard one at the mesh stiffness.
+            ConnectionKind::Gear(g) if g.backlash_deg > 0.0 || g.contact_exponent != 1.0 => {
+                // A softened or power-law contact works at the twist its mean torque
+                // needs, with its tangent there (`tooth_contact`); a hard linear one at
+                // the mesh stiffness.
                 let (k, _) = e.stiffness_at(0.0);
                 let deflection = torque / (k / r2);
-                let contact = super::dead_zone::contact_point(
-                    deflection,
-                    0.5 * g.backlash_deg.to_radians(),
-                    g.backlash_softening_deg.to_radians(),
-                );
+                let contact = super::tooth_contact::ToothContact {
+                    half_gap_rad: 0.5 * g.backlash_deg.to_radians(),
+                    softening_rad: g.backlash_softening_deg.to_radians(),
+                    exponent: g.contact_exponent,
+                    reference_rad: g.contact_reference_deg.to_radians(),
+                }
+                .working_point(deflection);
                 let (twist, share) = contact.unwrap_or((deflection, 1.0));
                 if let ElementLaw::Linear {
                     stiffness_nm_per_rad,

@@ -92,8 +92,13 @@ pub fn element_rate(plant: &Plant, e: &PlantElement) -> (f64, String) {
             spring(*stiffness),
             format!("connection `{name}` (stiffness {stiffness:.3e} N·m/rad, referred)"),
         ),
-        PlantLaw::Backlash { stiffness_own, .. } => (
-            spring(stiffness_own * e.ratio * e.ratio),
+        // A power-law contact is n·k steep at its reference deflection.
+        PlantLaw::Backlash {
+            stiffness_own,
+            contact,
+            ..
+        } => (
+            spring(stiffness_own * contact.exponent * e.ratio * e.ratio),
             format!("gear mesh `{name}` (stiffness {stiffness_own:.3e} N·m/rad)"),
         ),
         PlantLaw::Rubber(r) => {

@@ -8,7 +8,6 @@ use super::crank_angle::{CrankAnchor, wrap};
 use super::plant::{GOVERNOR_FILTER_HZ, Plant, PlantElement, PlantLaw, RubberPlant, Temperature};
 use super::speed::SpeedProfile;
 use crate::model::AmplitudeForm;
-use crate::physics::dead_zone::dead_zone;
 use std::f64::consts::TAU;
 
 /// What one element does at one state: referred torque and dissipated power.
@@ -72,10 +71,9 @@ impl Plant {
             PlantLaw::Backlash {
                 stiffness_own,
                 damping_own,
-                half_gap_rad,
-                softening_rad,
+                contact,
             } => {
-                let contact = dead_zone(Self::own_relative(e, y), *half_gap_rad, *softening_rad);
+                let contact = contact.deflection(Self::own_relative(e, y));
                 let rate_own = Self::own_relative(e, &y[n..]);
                 ElementState {
                     torque_ref_nm: (stiffness_own * contact + damping_own * rate_own) * e.ratio,

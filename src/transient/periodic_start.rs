@@ -80,7 +80,7 @@ fn linear_about_static_state(plant: &Plant) -> bool {
             (r.amplitude_poly.is_none() && r.amplitude_saturation.is_none())
                 || r.mm_per_rad.is_none()
         }
-        PlantLaw::Backlash { half_gap_rad, .. } => *half_gap_rad == 0.0,
+        PlantLaw::Backlash { contact, .. } => contact.is_linear(),
         PlantLaw::Linear { .. } => true,
     })
 }

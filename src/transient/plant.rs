@@ -9,6 +9,7 @@
 use super::TransientError;
 use crate::model::{AmplitudeForm, ConnectionKind, GROUND, HarmonicAmplitude, Model, Poly};
 use crate::physics::distributed::connection_rows;
+use crate::physics::tooth_contact::ToothContact;
 use crate::physics::{OperatingPoint, System, engine};
 use crate::rubber::MaxwellChain;
 
@@ -80,18 +81,16 @@ pub enum PlantLaw {
     },
     /// A rubber stage.
     Rubber(Box<RubberPlant>),
-    /// A gear mesh with backlash: `T = k·s(δ)` with free play ±half gap (own, `to` side),
-    /// `s` the dead zone, hard or softened ([`crate::model::Gear::backlash_softening_deg`]).
+    /// A gear mesh: `T = k·c(δ)`, `c` its tooth contact's law (free play ±half gap, own
+    /// `to` side, hard or softened, linear or Hertzian: [`ToothContact`]).
     Backlash {
         /// Mesh stiffness, own shaft (`to` side), N·m/rad.
         stiffness_own: f64,
         /// Mesh damping, own shaft (`to` side), N·m·s/rad, on the twist rate whether or
         /// not the teeth touch ([`crate::model::Gear::mesh_damping_nm_s_per_rad`]).
         damping_own: f64,
-        /// Half the free play, rad at the `to` side.
-        half_gap_rad: f64,
-        /// Width ε of the contact's softening, rad at the `to` side (0: hard contact).
-        softening_rad: f64,
+        /// The tooth contact's law, rad at the `to` side.
+        contact: ToothContact,
     },
 }
 
@@ -333,8 +332,12 @@ impl Plant {
                         PlantLaw::Backlash {
                             stiffness_own: k,
                             damping_own: g.mesh_damping_nm_s_per_rad,
-                            half_gap_rad: 0.5 * b.to_radians(),
-                            softening_rad: g.backlash_softening_deg.to_radians(),
+                            contact: ToothContact {
+                                half_gap_rad: 0.5 * b.to_radians(),
+                                softening_rad: g.backlash_softening_deg.to_radians(),
+                                exponent: g.contact_exponent,
+                                reference_rad: g.contact_reference_deg.to_radians(),
+                            },
                         },
                     ),
                 },

@@ -31,6 +31,8 @@ pub fn gear(from: &str, to: &str, ratio: f64, mesh: Option<f64>) -> Connection {
             mesh_damping_nm_s_per_rad: 0.0,
             backlash_deg: 0.0,
             backlash_softening_deg: 0.0,
+            contact_exponent: 1.0,
+            contact_reference_deg: 0.0,
         }),
     }
 }

@@ -157,6 +157,8 @@ fn connection_kind() -> impl Strategy<Value = ConnectionKind> {
                 backlash_deg: backlash.unwrap_or(0.0),
                 // a softened contact over a fifth of the half play, to cover its key
                 backlash_softening_deg: backlash.map_or(0.0, |b| 0.1 * b),
+                contact_exponent: 1.0,
+                contact_reference_deg: 0.0,
             })
         });
     prop_oneof![shaft, rubber().prop_map(ConnectionKind::Rubber), gear]

@@ -169,7 +169,7 @@ pub fn describe(model: &Model, sel: Selection, stations: &[String]) -> String {
                     )
                 }
                 ConnectionKind::Gear(g) => format!(
-                    "ratio {} (speed of {} / speed of {})\nmesh {}\nbacklash {}°{}",
+                    "ratio {} (speed of {} / speed of {})\nmesh {}\nbacklash {}°{}{}",
                     num(g.ratio),
                     c.to,
                     c.from,
@@ -178,6 +178,15 @@ pub fn describe(model: &Model, sel: Selection, stations: &[String]) -> String {
                     num(g.backlash_deg),
                     if g.backlash_softening_deg > 0.0 {
                         format!(", contact softened over {}°", num(g.backlash_softening_deg))
+                    } else {
+                        String::new()
+                    },
+                    if g.contact_exponent != 1.0 {
+                        format!(
+                            "\ncontact law: power {} of the deflection, as stiff as the mesh at {}°",
+                            num(g.contact_exponent),
+                            num(g.contact_reference_deg)
+                        )
                     } else {
                         String::new()
                     }

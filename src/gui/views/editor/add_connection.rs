@@ -113,6 +113,8 @@ pub fn add_ui(ui: &mut Ui, cx: &mut EditCtx, model: &mut Model) {
                     mesh_damping_nm_s_per_rad: 0.0,
                     backlash_deg: 0.0,
                     backlash_softening_deg: 0.0,
+                    contact_exponent: 1.0,
+                    contact_reference_deg: 0.0,
                 }),
             };
             model.connections.push(Connection {

@@ -201,4 +201,31 @@ fn gear_ui(ui: &mut Ui, cx: &mut EditCtx, key: &str, name: &str, g: &mut Gear) {
         0.01,
     );
     end_row(ui, cx);
+    ui.label("contact exponent").on_hover_text(
+        "exponent n of the tooth contact's law once the flanks touch: 1 linear, 1.5 Hertzian",
+    );
+    widgets::number(
+        ui,
+        cx,
+        &k("contact_exponent"),
+        &format!("contact exponent {name}"),
+        &mut g.contact_exponent,
+        "",
+        0.05,
+    );
+    end_row(ui, cx);
+    ui.label("contact reference").on_hover_text(
+        "deflection at which a power-law contact is as stiff as the mesh stiffness \
+         (needed when the exponent is not 1)",
+    );
+    widgets::number(
+        ui,
+        cx,
+        &k("contact_reference_deg"),
+        &format!("contact reference {name}"),
+        &mut g.contact_reference_deg,
+        "°",
+        0.01,
+    );
+    end_row(ui, cx);
 }
