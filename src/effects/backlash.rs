@@ -55,7 +55,10 @@ pub(crate) fn backlash(model: &mut Model, spec: &EffectSpec) -> Result<Applied, 
     let deg = p.number("backlash_deg", 0.2, 0.0, 10.0)?;
     let softening = p.optional_number("softening", 0.0, 10.0)?.unwrap_or(0.0);
     let ratio = p.optional_number("mesh_damping_ratio", 0.0, 2.0)?;
-    let exponent = p.number("contact_exponent", 1.0, 1.0, 3.0)?;
+    // Optional, so a linear contact resolves to the parameters it always had.
+    let exponent = p
+        .optional_number("contact_exponent", 1.0, 3.0)?
+        .unwrap_or(1.0);
     // Without play the effect is absent: the contact stays linear too.
     let reference_deg = if exponent == 1.0 || deg == 0.0 {
         None
