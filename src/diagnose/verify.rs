@@ -44,10 +44,11 @@ fn distinct(effects: &[Effect]) -> usize {
 pub const VERIFY_ROUNDS: usize = 3;
 
 /// Verifies the most promising screened candidates in the time domain: the best place of
-/// each form of each effect, ranked by `score` on the fitted observations (the held-out ones must not
-/// choose what gets verified), while it beats the plain fit's `plain_score` by
-/// [`SCREEN_MARGIN`] or fits to the noise ([`may_be_verified`]), of at most [`VERIFIED_EFFECTS`] effects the linear model screened
-/// (and every effect screened in the time domain). `progress` is told each one's name.
+/// each form of each effect, ranked by `score` on the fitted observations (the held-out
+/// ones must not choose what gets verified), while it beats the plain fit's `plain_score`
+/// by [`SCREEN_MARGIN`] or fits to the noise ([`may_be_verified`]), of at most
+/// [`VERIFIED_EFFECTS`] effects the linear model screened (and every effect screened in
+/// the time domain). `progress` is told each one's name.
 /// Returns the closed fits of the candidates checked for their own gain
 /// ([`super::own_gain`]) that are plain recalibrations: starts for the plain fit's
 /// refinement.
