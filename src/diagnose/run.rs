@@ -123,7 +123,7 @@ pub fn diagnose(
             cx.user = &damped_user;
             cx.mesh_damping = Some(chosen.added);
             origin = chosen.at_user;
-            let mut refit = cx.rounds(chosen.at_plain, None, PLAIN_ROUNDS, None);
+            let mut refit = cx.rounds(chosen.at_start, None, PLAIN_ROUNDS, None);
             refit.rejected.extend(chosen.rejected);
             refit.rejected.extend(fitted.rejected);
             fitted = refit;

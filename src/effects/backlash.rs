@@ -59,6 +59,14 @@ pub(crate) fn backlash(model: &mut Model, spec: &EffectSpec) -> Result<Applied, 
     let exponent = p
         .optional_number("contact_exponent", 1.0, 3.0)?
         .unwrap_or(1.0);
+    // A reference is the deflection a power law is referred to: a linear contact has none,
+    // and one given to it would be silently ignored.
+    if exponent == 1.0 && spec.params.contains_key("contact_reference_deg") {
+        return Err(p.bad(
+            "contact_reference_deg",
+            "a linear contact has no reference deflection: give contact_exponent > 1 with it",
+        ));
+    }
     // Without play the effect is absent: the contact stays linear too.
     let reference_deg = if exponent == 1.0 || deg == 0.0 {
         None
@@ -216,7 +224,8 @@ mod tests {
 
     /// A Hertzian contact: as stiff as the mesh at the full-load deflection T/k (here
     /// below the half play, which it takes instead), or at the reference given; its
-    /// absence (no play) leaves the contact linear too; an exponent outside 1–3 is refused.
+    /// absence (no play) leaves the contact linear too; an exponent outside 1–3, or a reference
+    /// without a power law, is refused.
     #[test]
     fn a_hertzian_contact_is_referred_to_the_working_load_or_the_play() {
         let user = bench();
@@ -255,5 +264,11 @@ mod tests {
         assert_eq!((g.contact_exponent, g.contact_reference_deg), (1.0, 0.0));
         let steep = hertz.with("contact_exponent", 3.5);
         assert!(build_truth(&user, &steep, 0.0, 0).is_err());
+        // A reference without a power law is refused by its key, not ignored.
+        let linear = EffectSpec::new(Effect::GearBacklash)
+            .with("backlash_deg", 0.2)
+            .with("contact_reference_deg", 0.05);
+        let e = build_truth(&user, &linear, 0.0, 0).expect_err("a linear contact");
+        assert!(e.to_string().contains("contact_reference_deg"), "{e}");
     }
 }
