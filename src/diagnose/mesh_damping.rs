@@ -17,9 +17,10 @@
 //! its own mode, [`crate::effects::backlash::mesh_mode_inertia_kg_m2`]), at the plain fit's
 //! factors and at the user's values, and the damping that fits the fitted recordings better
 //! than the plain fit by at least [`MIN_GAIN`](super::mesh_damping_search::MIN_GAIN)
-//! becomes part of the model every candidate is fitted from. It is a plain value the model format could
-//! not give, not new physics: the report names it under [`KEY_PREFIX`]`<gear>` in every
-//! candidate row (N·m·s/rad), and accepting any verdict puts it into the model ([`apply`]).
+//! becomes part of the model every candidate is fitted from. It is a plain value the model
+//! format could not give, not new physics: the report names it under [`KEY_PREFIX`]`<gear>`
+//! in every candidate row (N·m·s/rad), and accepting any verdict puts it into the model
+//! ([`apply`]).
 
 use super::report::{ParameterValue, Verdict};
 use crate::effects::backlash::mesh_mode_inertia_kg_m2;

@@ -55,9 +55,9 @@ pub struct Chosen {
 /// Tries [`RATIOS`] on `gears` of `cx.user`, each at the plain fit `plain`'s factors and
 /// at the user's values (every factor 1), then, where the grid gains half of [`MIN_GAIN`],
 /// [`HALVINGS`] bracket halvings about the best in ln ζ at the best's factors, with the
-/// parabola's vertex through the last three. `None` when there are no
-/// gears, or no ratio lowers the fitted χ² by [`MIN_GAIN`]. A ratio that cannot be simulated is a
-/// rejected step; only cancelling is an error.
+/// parabola's vertex through the last three. `None` when there are no gears, or no ratio
+/// lowers the fitted χ² by [`MIN_GAIN`]. A ratio that cannot be simulated is a rejected
+/// step; only cancelling is an error.
 pub fn choose(
     cx: &Context,
     gears: &[String],
